@@ -1,0 +1,94 @@
+// symrep/algebra/algebra.cpp -- coordinate-vector helpers shared by all algebras.
+#include "algebra/algebra.h"
+
+#include <sstream>
+
+#include "algebra/scalar.h"
+#include "io/error.h"
+
+namespace symrep {
+
+using GiNaC::ex;
+
+std::string algebra::basis_name(std::size_t k) const { return "e" + std::to_string(k); }
+
+coeffs algebra::unit() const { return basis_vector(0); }
+
+coeffs algebra::basis_product(std::size_t i, std::size_t j) const {
+    return multiply(basis_vector(i), basis_vector(j));
+}
+
+coeffs algebra::basis_vector(std::size_t k) const {
+    coeffs c = zero();
+    if (k >= c.size())
+        throw algebra_error(name() + " has " + std::to_string(c.size()) + " basis elements (0.." +
+                            std::to_string(c.size() - 1) + "); there is no basis element " +
+                            std::to_string(k));
+    c[k] = 1;
+    return c;
+}
+
+coeffs algebra::add(const coeffs& a, const coeffs& b) {
+    coeffs c(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) c[k] = a[k] + b[k];
+    return c;
+}
+
+coeffs algebra::sub(const coeffs& a, const coeffs& b) {
+    coeffs c(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) c[k] = a[k] - b[k];
+    return c;
+}
+
+coeffs algebra::scale(const ex& s, const coeffs& a) {
+    coeffs c(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) c[k] = tidy(s * a[k]);
+    return c;
+}
+
+coeffs algebra::power(const coeffs& w, unsigned long k) const {
+    coeffs result = unit();
+    coeffs base = w;
+    while (k > 0) {
+        if (k & 1) result = multiply(result, base);
+        k >>= 1;
+        if (k > 0) base = multiply(base, base);
+    }
+    return result;
+}
+
+coeffs algebra::evaluate_polynomial(const ex& p, const GiNaC::symbol& X, const coeffs& w) const {
+    check_size(w, "polynomial evaluation");
+    ex q = GiNaC::expand(p);
+    if (!q.is_polynomial(X))
+    {
+        std::ostringstream os;
+        os << "cannot evaluate " << q << " at an algebra element: it is not a polynomial in " << X;
+        throw type_error(os.str());
+    }
+    const int deg = q.degree(X);
+    coeffs acc = zero();
+    for (int k = deg; k >= 0; --k) {  // Horner: acc = acc*w + c_k
+        acc = multiply(acc, w);
+        const ex ck = q.coeff(X, k);
+        coeffs u = unit();
+        for (std::size_t i = 0; i < u.size(); ++i) acc[i] = tidy(acc[i] + ck * u[i]);
+    }
+    return acc;
+}
+
+bool algebra::equal(const coeffs& a, const coeffs& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (!is_zero_scalar(a[k] - b[k])) return false;
+    return true;
+}
+
+void algebra::check_size(const coeffs& a, const char* what) const {
+    if (a.size() != dim())
+        throw algebra_error(std::string(what) + ": " + name() + " has dimension " +
+                            std::to_string(dim()) + ", but " + std::to_string(a.size()) +
+                            " coordinates were given");
+}
+
+}  // namespace symrep

@@ -1,0 +1,110 @@
+// symrep/algebra/algebra.h -- a finite-dimensional commutative, associative,
+// unital real algebra A_n (thesis II.1), with exact coefficients.
+//
+// An algebra is known by its product on coefficient vectors in a fixed basis
+// {eps_1..eps_n} (II.1.1-2). Everything else has a general default derived from
+// the product through the canonical matrix [w] (II.1.3-4):
+//   a_jk = sum_i w_i gamma_ijk, i.e. row j of [w] holds the coordinates of w eps_j.
+// Families with a fast structure (multicomplex, Sobrero, Walsh, polynomial)
+// override the virtuals with their own theorems; tests check that the fast paths
+// agree with these general defaults on the structure-constant algebra built
+// from the same table (structure_algebra::from).
+//
+// Algebras are immutable and shared (algebra_ptr); elements (element.h) are values.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace symrep {
+
+/// Coordinates of an element in the algebra's basis (exact).
+using coeffs = std::vector<GiNaC::ex>;
+
+class algebra;
+using algebra_ptr = std::shared_ptr<const algebra>;
+
+/// A scalar function to be applied to an algebra element through its minimal
+/// polynomial (Hermite interpolation at the roots). `value(re, im, j)` returns
+/// the real and imaginary parts of f^{(j)}(re + i im). Used by exp(w t) and log.
+struct scalar_function {
+    std::string name;
+    /// Writes Re and Im of the j-th derivative of f at the point re + i*im.
+    /// Throws domain_error where f (or the derivative) is not defined.
+    std::function<void(const GiNaC::ex& re, const GiNaC::ex& im, unsigned j,
+                       GiNaC::ex& out_re, GiNaC::ex& out_im)> value;
+};
+
+class algebra : public std::enable_shared_from_this<algebra> {
+public:
+    virtual ~algebra() = default;
+
+    // --- identity ---------------------------------------------------------
+    /// Canonical name, also used as identity: two algebras with the same name are
+    /// the same algebra (e.g. "multicomplex(2)", "sobrero(3)", "walsh(4)").
+    virtual std::string name() const = 0;
+    /// Order n = dim over R.
+    virtual std::size_t dim() const = 0;
+    /// Printable name of basis element k (e.g. "e3", "i0*i2"); default "e<k>".
+    virtual std::string basis_name(std::size_t k) const;
+
+    // --- the product: the only thing a subclass must provide -----------------
+    /// Product of two coordinate vectors (II.1.2).
+    virtual coeffs multiply(const coeffs& a, const coeffs& b) const = 0;
+    /// Coordinates of the identity (default: the first basis element).
+    virtual coeffs unit() const;
+    /// Structure constants gamma_ij. (k = 0..n-1): coordinates of eps_i eps_j
+    /// (default: multiply of unit vectors).
+    virtual coeffs basis_product(std::size_t i, std::size_t j) const;
+
+    // --- general methods (II.1-II.2, III.4), overridable by fast paths --------
+    /// (II.1.3-4) canonical matrix [w], a_jk = sum_i w_i gamma_ijk.
+    virtual GiNaC::matrix canonical_matrix(const coeffs& w) const;
+    /// det [w] (II.1.21).
+    virtual GiNaC::ex determinant(const coeffs& w) const;
+    /// Monic characteristic polynomial det(X I - [w]) in X (II.1.20 up to the sign (-1)^n).
+    virtual GiNaC::ex charpoly(const coeffs& w, const GiNaC::symbol& X) const;
+    /// Monic minimal polynomial of w (Cor. II.1.1): the first power of w that is a
+    /// linear combination of the lower ones.
+    virtual GiNaC::ex minpoly(const coeffs& w, const GiNaC::symbol& X) const;
+    /// w is a zero divisor iff det [w] = 0 (II.1.22).
+    virtual bool is_zero_divisor(const coeffs& w) const;
+    /// Inverse; throws zero_divisor_error for a zero divisor.
+    virtual coeffs inverse(const coeffs& w) const;
+    /// exp(w t) as a closed form in t (Thm II.2.3; II.2 e^{dt} = sum d^k t^k/k!).
+    virtual coeffs exp(const coeffs& w, const GiNaC::ex& t) const;
+    /// A logarithm u with exp(u) = w, where one exists in the algebra; throws
+    /// zero_divisor_error or domain_error otherwise.
+    virtual coeffs log(const coeffs& w) const;
+    /// f(w) for a scalar function, by Hermite interpolation on the roots of the
+    /// minimal polynomial (the general method behind exp and log).
+    coeffs apply_function(const coeffs& w, const scalar_function& f) const;
+
+    // --- helpers shared by all algebras -----------------------------------------
+    /// Coordinates of basis element k.
+    coeffs basis_vector(std::size_t k) const;
+    /// The zero vector.
+    coeffs zero() const { return coeffs(dim(), GiNaC::ex(0)); }
+    /// Sum, difference and scalar multiple of coordinate vectors.
+    static coeffs add(const coeffs& a, const coeffs& b);
+    static coeffs sub(const coeffs& a, const coeffs& b);
+    static coeffs scale(const GiNaC::ex& s, const coeffs& a);
+    /// w^k, k >= 0, by repeated squaring.
+    coeffs power(const coeffs& w, unsigned long k) const;
+    /// p(w) for a polynomial p in X (Horner).
+    coeffs evaluate_polynomial(const GiNaC::ex& p, const GiNaC::symbol& X, const coeffs& w) const;
+    /// Exact equality of coordinate vectors (each difference normalizes to 0).
+    static bool equal(const coeffs& a, const coeffs& b);
+    /// Checks that a vector has dim() entries; throws algebra_error otherwise.
+    void check_size(const coeffs& a, const char* what) const;
+
+protected:
+    algebra() = default;
+};
+
+}  // namespace symrep

@@ -1,0 +1,78 @@
+// symrep/io/builtins.h -- the functions callable from symrep scripts.
+//
+// Each builtin carries its own documentation (signature, meaning, the thesis
+// equation it implements, an example); `symrep --doc` renders the registry as
+// Markdown and docs/language.md is checked against it by a test, so the
+// reference and the program never disagree.
+//
+// Builtins are registered explicitly (no static initializers, which a static
+// library would drop): the interpreter calls every register_* function below.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/error.h"
+#include "io/value.h"
+
+namespace symrep::lang {
+
+/// What a builtin may ask of the running session.
+class context {
+public:
+    virtual ~context() = default;
+    /// The session's real symbol with this name (created on first use).
+    virtual GiNaC::symbol symbol(const std::string& name) = 0;
+    /// Where print() and friends write.
+    virtual std::ostream& out() = 0;
+};
+
+struct builtin {
+    std::string name;
+    std::string signature;  ///< e.g. "inverse(w)"
+    std::string summary;    ///< what it does, one or two sentences
+    std::string equation;   ///< thesis equation(s), e.g. "(III.1.57)"; may be empty
+    std::string example;    ///< a statement that runs, e.g. "inverse(mc(1, [1,2,0,0]))"
+    std::string section;    ///< grouping in the reference, e.g. "Multicomplex algebra"
+    std::size_t min_args = 0;
+    std::size_t max_args = 0;  ///< SIZE_MAX for variadic
+    std::function<value(const std::vector<value>& args, context& ctx)> fn;
+};
+
+class registry {
+public:
+    /// Adds a builtin; a duplicate name is a programming error (std::logic_error).
+    void add(builtin b);
+    const builtin* find(const std::string& name) const;
+    /// All builtins, sorted by section then name.
+    std::vector<const builtin*> all() const;
+
+private:
+    std::map<std::string, builtin> table_;
+};
+
+// --- argument checking: each throws type_error naming the function and argument
+const element& arg_element(const std::vector<value>& args, std::size_t i, const builtin& b);
+const algebra_ptr& arg_algebra(const std::vector<value>& args, std::size_t i, const builtin& b);
+const GiNaC::ex& arg_ex(const std::vector<value>& args, std::size_t i, const builtin& b);
+const list& arg_list(const std::vector<value>& args, std::size_t i, const builtin& b);
+const std::string& arg_string(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// A non-negative integer argument (exact integer expression).
+long arg_int(const std::vector<value>& args, std::size_t i, const builtin& b, long min, long max);
+/// A GiNaC symbol argument.
+GiNaC::symbol arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// A list of expressions (each entry must be an expression).
+std::vector<GiNaC::ex> arg_ex_list(const std::vector<value>& args, std::size_t i, const builtin& b);
+
+// --- registration, one function per part of the engine ---------------------------
+void register_core_builtins(registry& r);         // io/builtins_core.cpp: print, subs, diff, expand, ...
+void register_algebra_builtins(registry& r);      // io/builtins_algebra.cpp: generic algebras, elements
+void register_multicomplex_builtins(registry& r); // io/builtins_multicomplex.cpp
+void register_sobrero_builtins(registry& r);      // io/builtins_sobrero.cpp
+void register_walsh_builtins(registry& r);        // io/builtins_walsh.cpp
+void register_polynomial_builtins(registry& r);   // io/builtins_polynomial.cpp
+
+}  // namespace symrep::lang

@@ -1,0 +1,57 @@
+// symrep/io/value.h -- the values of the symrep language.
+//
+// A value is one of: nothing (a statement with no result), a boolean, a GiNaC
+// expression (numbers, symbols, formulas, relations `a = b`), a string, a list,
+// an algebra, or an element of an algebra. Values are immutable and cheap to copy.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "algebra/element.h"
+
+namespace symrep::lang {
+
+struct value;
+using list = std::vector<value>;
+
+struct value {
+    using variant_t = std::variant<std::monostate, bool, GiNaC::ex, std::string,
+                                   std::shared_ptr<const list>, algebra_ptr, element>;
+    variant_t v;
+
+    value() = default;
+    value(bool b) : v(b) {}
+    value(GiNaC::ex e) : v(std::move(e)) {}
+    value(const GiNaC::symbol& s) : v(GiNaC::ex(s)) {}
+    value(int k) : v(GiNaC::ex(k)) {}
+    value(std::string s) : v(std::move(s)) {}
+    value(const char* s) : v(std::string(s)) {}
+    value(list l) : v(std::make_shared<const list>(std::move(l))) {}
+    value(algebra_ptr A) : v(std::move(A)) {}
+    value(element w) : v(std::move(w)) {}
+
+    bool is_none() const { return std::holds_alternative<std::monostate>(v); }
+    bool is_bool() const { return std::holds_alternative<bool>(v); }
+    bool is_ex() const { return std::holds_alternative<GiNaC::ex>(v); }
+    bool is_string() const { return std::holds_alternative<std::string>(v); }
+    bool is_list() const { return std::holds_alternative<std::shared_ptr<const list>>(v); }
+    bool is_algebra() const { return std::holds_alternative<algebra_ptr>(v); }
+    bool is_element() const { return std::holds_alternative<element>(v); }
+
+    bool as_bool() const { return std::get<bool>(v); }
+    const GiNaC::ex& as_ex() const { return std::get<GiNaC::ex>(v); }
+    const std::string& as_string() const { return std::get<std::string>(v); }
+    const list& as_list() const { return *std::get<std::shared_ptr<const list>>(v); }
+    const algebra_ptr& as_algebra() const { return std::get<algebra_ptr>(v); }
+    const element& as_element() const { return std::get<element>(v); }
+
+    /// "nothing", "boolean", "expression", "string", "list", "algebra", "element".
+    std::string kind() const;
+};
+
+}  // namespace symrep::lang
