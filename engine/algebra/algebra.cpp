@@ -77,6 +77,35 @@ coeffs algebra::evaluate_polynomial(const ex& p, const GiNaC::symbol& X, const c
     return acc;
 }
 
+namespace {
+[[noreturn]] void no_structure(const algebra& A, const std::string& what) {
+    throw algebra_error(what + " is not available for " + A.name() +
+                        ": it is defined for the multicomplex, Sobrero and Walsh algebras");
+}
+}  // namespace
+
+coeffs algebra::idempotent(std::size_t) const { no_structure(*this, "an idempotent basis"); }
+std::vector<ex> algebra::idempotent_components(const coeffs&) const {
+    no_structure(*this, "an idempotent basis");
+}
+coeffs algebra::from_idempotent_components(const std::vector<ex>&) const {
+    no_structure(*this, "an idempotent basis");
+}
+std::vector<std::size_t> algebra::zero_divisor_ranks(const coeffs&) const {
+    no_structure(*this, "the rank of a zero divisor");
+}
+std::pair<coeffs, coeffs> algebra::semiexponential(const coeffs&) const {
+    no_structure(*this, "the semiexponential form");
+}
+bool algebra::is_special_type(const coeffs&, bool) const { no_structure(*this, "the special type"); }
+std::vector<coeffs> algebra::special_type_decomposition(const coeffs&) const {
+    no_structure(*this, "the special-type decomposition");
+}
+coeffs algebra::generating_element(const std::vector<ex>&) const {
+    throw algebra_error("no generating element is known for " + name() +
+                        "; use is_polynomial() to search for one (Thm III.4.1)");
+}
+
 bool algebra::equal(const coeffs& a, const coeffs& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t k = 0; k < a.size(); ++k)

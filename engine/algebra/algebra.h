@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,31 @@ public:
     /// f(w) for a scalar function, by Hermite interpolation on the roots of the
     /// minimal polynomial (the general method behind exp and log).
     coeffs apply_function(const coeffs& w, const scalar_function& f) const;
+
+    // --- idempotent structure and special forms (Ch. III families) -------------
+    // Defaults throw algebra_error naming the algebra: a general structure-constant
+    // algebra has no idempotent basis computed for it. Families override.
+    /// Number of orthogonal idempotents e_p of the family's idempotent basis (0: none).
+    virtual std::size_t idempotent_count() const { return 0; }
+    /// Coordinates of the orthogonal idempotent e_p (III.1.15, III.3.7).
+    virtual coeffs idempotent(std::size_t p) const;
+    /// Components c_p of w = sum_p c_p e_p: complex GiNaC expressions a_p + I b_p in the
+    /// multicomplex algebra (III.1.39) and W* (III.3.61), real in W (III.3.24).
+    virtual std::vector<GiNaC::ex> idempotent_components(const coeffs& w) const;
+    /// Inverse of idempotent_components.
+    virtual coeffs from_idempotent_components(const std::vector<GiNaC::ex>& c) const;
+    /// The ranks p with c_p = 0 (III.1.55, III.3.31): empty iff w is not a zero divisor.
+    virtual std::vector<std::size_t> zero_divisor_ranks(const coeffs& w) const;
+    /// Semiexponential form w = rho exp(theta) (III.1.72-76, III.2.16): returns {rho, theta}.
+    virtual std::pair<coeffs, coeffs> semiexponential(const coeffs& w) const;
+    /// Special-type test (III.1.77-78, III.2.19-20 corrected). `strict` = false admits
+    /// real coefficients of either sign where the family distinguishes (Sobrero).
+    virtual bool is_special_type(const coeffs& w, bool strict = true) const;
+    /// Decomposition of w into special-type elements (Thm III.1.3.1, Thm III.2.2.1).
+    virtual std::vector<coeffs> special_type_decomposition(const coeffs& w) const;
+    /// A generating element of the algebra (III.4.2 a-c) with the given parameters
+    /// (omega_k, alpha/beta, alpha_k); empty params: the family's default choice.
+    virtual coeffs generating_element(const std::vector<GiNaC::ex>& params) const;
 
     // --- helpers shared by all algebras -----------------------------------------
     /// Coordinates of basis element k.
