@@ -74,5 +74,6 @@ void register_multicomplex_builtins(registry& r); // io/builtins_multicomplex.cp
 void register_sobrero_builtins(registry& r);      // io/builtins_sobrero.cpp
 void register_walsh_builtins(registry& r);        // io/builtins_walsh.cpp
 void register_polynomial_builtins(registry& r);   // io/builtins_polynomial.cpp
+void register_check_builtins(registry& r);        // io/builtins_check.cpp: expect, expect_near
 
 }  // namespace symrep::lang
