@@ -43,8 +43,10 @@ std::string walsh_complex::basis_name(std::size_t k) const {
 
 coeffs walsh_complex::generator(std::size_t k) const {
     if (k >= n_)
-        throw domain_error("walsh_generator: " + name() + " has generators u_0..u_" +
-                           std::to_string(long(n_) - 1) + "; there is no u_" + std::to_string(k));
+        throw domain_error("walsh_generator: " + name() +
+                           (n_ == 0 ? std::string(" has no generators u_k")
+                                    : " has generators u_0..u_" + std::to_string(n_ - 1)) +
+                           "; there is no u_" + std::to_string(k));
     return basis_vector(std::size_t(1) << (n_ - 1 - k));
 }
 
