@@ -185,7 +185,10 @@ TEST(Sobrero, Inverse) {
     } catch (const zero_divisor_error& e) {
         EXPECT_NE(std::string(e.what()).find("a_0 = b_0 = 0"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("sobrero(4)"), std::string::npos);
+        EXPECT_EQ(e.ranks, (std::vector<std::size_t>{0}));
     }
+    EXPECT_EQ(A->zero_divisor_ranks(nil), (std::vector<std::size_t>{0}));
+    EXPECT_TRUE(A->zero_divisor_ranks(w).empty());
     EXPECT_THROW(A->log(nil), zero_divisor_error);
 }
 

@@ -200,6 +200,17 @@ TEST(Walsh, DeterminantCharpolyMinpoly) {
     }
     auto A = W(3);
     const coeffs f = rational(8, 7);
+    {  // (27) in the idempotent basis [f] is diag(a_0..a_7): E [f] E^{-1} = diag(a)
+        GiNaC::matrix E(8, 8);
+        for (std::size_t p = 0; p < 8; ++p) {
+            const coeffs e = A->idempotent(p);
+            for (std::size_t q = 0; q < 8; ++q) E(p, q) = e[q];
+        }
+        const GiNaC::matrix D = E.mul(A->canonical_matrix(f)).mul(E.inverse());
+        const auto a = A->idempotent_components(f);
+        for (std::size_t p = 0; p < 8; ++p)
+            for (std::size_t q = 0; q < 8; ++q) EXPECT_TRUE(same(D(p, q), p == q ? a[p] : ex(0)));
+    }
     EXPECT_TRUE(same(A->determinant(f), A->algebra::determinant(f)));
     EXPECT_TRUE(same(A->charpoly(f, X), A->algebra::charpoly(f, X)));
     // repeated roots: components (1, 1, 2, 2, 2, -1, 0, 0)

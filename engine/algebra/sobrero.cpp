@@ -104,12 +104,17 @@ bool sobrero::is_zero_divisor(const coeffs& w) const {
     return is_zero_scalar(w[0]) && is_zero_scalar(w[n_ + 1]);
 }
 
+std::vector<std::size_t> sobrero::zero_divisor_ranks(const coeffs& w) const {
+    if (is_zero_divisor(w)) return {0};
+    return {};
+}
+
 namespace {
 [[noreturn]] void throw_nilpotent(const sobrero& S, const char* what) {
     throw zero_divisor_error(std::string(what) + " of a zero divisor in " + S.name() +
                                  ": a_0 = b_0 = 0 (III.2.13), so w is nilpotent, w^" +
                                  std::to_string(S.n() + 1) + " = 0 (III.2.15)",
-                             {});
+                             {0});
 }
 }  // namespace
 

@@ -17,7 +17,8 @@
 //                     m = nilpotency index of N = 1 + floor(n / k_0), k_0 the first
 //                     k >= 1 with xi_k != 0 (m = 1 when N = 0)
 //   determinant       (a_0^2 + b_0^2)^{n+1}
-//   is_zero_divisor   a_0 = b_0 = 0 (III.2.13); zero divisors are nilpotent (III.2.15)
+//   is_zero_divisor   a_0 = b_0 = 0 (III.2.13); zero divisors are nilpotent (III.2.15);
+//                     zero_divisor_ranks gives {0} for them (the single idempotent 1)
 //   inverse, exp(w t), log   nilpotent series around xi_0 (sobrero_kernel.h)
 //   semiexponential   (III.2.16-18)
 //   is_special_type   corrected (III.2.20): all xi_k on one ray (strict) or one line
@@ -51,6 +52,9 @@ public:
     GiNaC::ex charpoly(const coeffs& w, const GiNaC::symbol& X) const override;
     GiNaC::ex minpoly(const coeffs& w, const GiNaC::symbol& X) const override;
     bool is_zero_divisor(const coeffs& w) const override;
+    /// S is local: its only idempotent is 1 and the zero divisors are the elements with
+    /// xi_0 = 0 (III.2.13). Returns {0} for a zero divisor, {} otherwise.
+    std::vector<std::size_t> zero_divisor_ranks(const coeffs& w) const override;
     coeffs inverse(const coeffs& w) const override;
     coeffs exp(const coeffs& w, const GiNaC::ex& t) const override;
     coeffs log(const coeffs& w) const override;

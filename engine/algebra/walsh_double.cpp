@@ -250,7 +250,7 @@ std::vector<double> sobrero_d::inverse(const std::vector<double>& w, double tol)
     if (is_zero_divisor(w, tol))
         throw zero_divisor_error("inverse of a zero divisor in sobrero_d(" + std::to_string(n_) +
                                      "): a_0 = b_0 = 0 (III.2.13)",
-                                 {});
+                                 {0});
     return sm::to_coords(sm::inverse(sm::from_coords(w)));
 }
 
@@ -263,7 +263,7 @@ std::vector<double> sobrero_d::log(const std::vector<double>& w, double tol) con
     if (is_zero_divisor(w, tol))
         throw zero_divisor_error("log of a zero divisor in sobrero_d(" + std::to_string(n_) +
                                      "): a_0 = b_0 = 0 (III.2.13)",
-                                 {});
+                                 {0});
     return sm::to_coords(sm::log(sm::from_coords(w)));
 }
 
