@@ -196,7 +196,7 @@ coeffs walsh::log(const coeffs& w) const {
             std::ostringstream os;
             os << "log in " << name() << ": the root a_" << p << " = " << a[p]
                << " of the characteristic polynomial "
-               << (s < 0 ? "is negative" : "is not known to be positive")
+               << (s < 0 ? "is not positive" : "is not known to be positive")
                << "; Thm III.3.3.1 needs every a_p > 0 (III.3.40). Every non-zero-divisor has a "
                   "logarithm in the complex extension walsh_complex("
                << n_ << ") (III.3.64-67)";
