@@ -434,3 +434,20 @@ TEST(SobreroDouble, MatchesExact) {
     check(A->log(w), D.log(wd));
     check(A->multiply(w, w), D.multiply(wd, wd));
 }
+
+// n = 3 with symbolic coefficients: fast charpoly and determinant against det(X I - [w]) of
+// the 8 x 8 canonical matrix; and the element API dispatches to the overrides.
+TEST(Sobrero, SymbolicN3AndElementApi) {
+    GiNaC::symbol X("X");
+    auto A = S(3);
+    std::vector<GiNaC::realsymbol> s;
+    const coeffs w = symbolic(3, s);
+    EXPECT_TRUE(same_poly(A->charpoly(w, X), A->algebra::charpoly(w, X)));
+    EXPECT_TRUE(same_poly(A->determinant(w), A->algebra::determinant(w)));
+    const element e(A, w);
+    EXPECT_TRUE(e * e.inverse() == element::one(A));
+    EXPECT_TRUE(e.exp(0) == element::one(A));
+    const element g(A, A->generating_element({}));
+    EXPECT_TRUE(same_poly(g.minpoly(X), GiNaC::pow(X * X + 1, 4)));
+    EXPECT_TRUE(close(g.exp(1).log().coefficients(), g.coefficients()));  // principal log inverts exp
+}
