@@ -79,8 +79,8 @@ coeffs algebra::evaluate_polynomial(const ex& p, const GiNaC::symbol& X, const c
 
 namespace {
 [[noreturn]] void no_structure(const algebra& A, const std::string& what) {
-    throw algebra_error(what + " is not available for " + A.name() +
-                        ": it is defined for the multicomplex, Sobrero and Walsh algebras");
+    throw algebra_error(what + " is not defined for " + A.name() +
+                        " in symrep (see docs/algebras.md for what each family provides)");
 }
 }  // namespace
 
