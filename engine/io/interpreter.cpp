@@ -259,7 +259,11 @@ session::~session() = default;
 GiNaC::symbol session::symbol(const std::string& name) {
     auto it = symbols_.find(name);
     if (it != symbols_.end()) return it->second;
-    GiNaC::realsymbol s(name);
+    // A plain (complex-domain) symbol for now: context::symbol and arg_symbol
+    // (io/builtins.h) return GiNaC::symbol by value, which would slice a
+    // realsymbol into a *different* symbol (x - x would not cancel). See
+    // docs/language.md, "Symbols".
+    GiNaC::symbol s(name);
     symbols_.emplace(name, s);
     return s;
 }

@@ -2,6 +2,7 @@
 #include "io/printer.h"
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 #include <tuple>
 
@@ -194,7 +195,36 @@ struct term_text {
     numeric degree;
     bool symbolic;
     std::string monomial;
+    std::map<std::string, numeric> powers;  // symbol name -> exponent
 };
+
+// Exponents of the symbols in a term (powers of symbols with numeric exponents).
+void symbol_powers(const std::vector<ex>& factors, std::map<std::string, numeric>& out) {
+    for (const ex& f : factors) {
+        if (is_a<GiNaC::symbol>(f)) out[ex_to<GiNaC::symbol>(f).get_name()] += 1;
+        else if (is_a<GiNaC::power>(f) && is_a<GiNaC::symbol>(f.op(0)) && is_a<numeric>(f.op(1)) &&
+                 ex_to<numeric>(f.op(1)).is_real())
+            out[ex_to<GiNaC::symbol>(f.op(0)).get_name()] += ex_to<numeric>(f.op(1));
+    }
+}
+
+// Lexicographic order on exponent vectors, symbols taken alphabetically: returns
+// -1 when a comes first (higher power of the first differing symbol), 1 when b does.
+int lex_compare(const std::map<std::string, numeric>& a, const std::map<std::string, numeric>& b) {
+    auto i = a.begin();
+    auto j = b.begin();
+    while (i != a.end() || j != b.end()) {
+        std::string name;
+        if (j == b.end() || (i != a.end() && i->first < j->first)) name = i->first;
+        else name = j->first;
+        const numeric ea = (i != a.end() && i->first == name) ? i->second : numeric(0);
+        const numeric eb = (j != b.end() && j->first == name) ? j->second : numeric(0);
+        if (ea != eb) return ea > eb ? -1 : 1;
+        if (i != a.end() && i->first == name) ++i;
+        if (j != b.end() && j->first == name) ++j;
+    }
+    return 0;
+}
 
 printed pr_sum(const ex& e) {
     std::vector<term_text> terms;
@@ -212,12 +242,14 @@ printed pr_sum(const ex& e) {
         tt.degree = degree_of(t);
         tt.symbolic = has_symbol(t);
         tt.monomial = rest.empty() ? std::string() : pr_product(1, rest).text;
+        symbol_powers(rest, tt.powers);
         terms.push_back(std::move(tt));
     }
     std::sort(terms.begin(), terms.end(), [](const term_text& a, const term_text& b) {
         if (a.is_order != b.is_order) return b.is_order;
         if (a.degree != b.degree) return a.degree > b.degree;
         if (a.symbolic != b.symbolic) return a.symbolic;
+        if (const int c = lex_compare(a.powers, b.powers)) return c < 0;
         if (a.monomial != b.monomial) return a.monomial < b.monomial;
         if (a.negative != b.negative) return !a.negative;
         return a.body < b.body;
