@@ -36,16 +36,9 @@ void add(registry& r, std::string name, std::string sig, std::string summary, st
     r.add(std::move(b));
 }
 
-list ex_list(const coeffs& c) {
-    list l;
-    l.reserve(c.size());
-    for (const ex& x : c) l.push_back(x);
-    return l;
-}
-
-list ex_list(const std::vector<ex>& c, bool) {
-    list l;
-    for (const ex& x : c) l.push_back(x);
+list ex_list(const std::vector<ex>& c) {
+    list l(c.size());
+    for (std::size_t k = 0; k < c.size(); ++k) l[k].v.emplace<GiNaC::ex>(c[k]);
     return l;
 }
 
@@ -169,7 +162,7 @@ void register_algebra_builtins(registry& r) {
         "(III.1.39, III.3.24, III.3.61)", "components(element(multicomplex(2), [1, 2, 3, 4]))", 1, 1,
         [](const builtin& b, const args_t& a, context&) {
             const element& w = arg_element(a, 0, b);
-            return value(ex_list(w.parent().idempotent_components(w.coefficients()), true));
+            return value(ex_list(w.parent().idempotent_components(w.coefficients())));
         });
     add(r, "from_components", "from_components(A, [c0, c1, ...])",
         "The element of A with the given idempotent components (inverse of components).",
