@@ -218,3 +218,23 @@ TEST(Interpreter, LoadRunsInTheSameSession) {
     EXPECT_NE(t.err.str().find("symrep_load_inner.sr:2:7: error: syntax error"), std::string::npos) << t.err.str();
     EXPECT_GE(t.run("load(\"/nonexistent/file.sr\")"), 1);
 }
+
+TEST(Interpreter, LongAndDeepInputsDoNotCrash) {
+    test_session t;
+    std::string longsum = "1";
+    for (int i = 0; i < 20000; ++i) longsum += "+x";
+    EXPECT_TRUE(same(t.ex(longsum), 20000 * t.s.symbol("x") + 1));
+    std::string deep(5000, '(');
+    deep += "1" + std::string(5000, ')');
+    EXPECT_EQ(t.run(deep), 1);
+    EXPECT_NE(t.err.str().find("nested too deeply"), std::string::npos) << t.err.str();
+    EXPECT_EQ(t.run("2^(10^9)"), 1);
+    EXPECT_NE(t.err.str().find("more than 10^7 bits"), std::string::npos) << t.err.str();
+}
+
+TEST(Interpreter, ChainOperatorLocations) {
+    test_session t;
+    EXPECT_EQ(t.run("u := element(cplx(), [1, 2])\n1 + 2 + [3] * 4 - u"), 1);
+    // [3]*4 is fine (a list times a scalar); 1 + 2 + [12] fails at the second '+'
+    EXPECT_EQ(t.err.str().rfind("t.sr:2:7: error: cannot add an expression and a list", 0), 0u) << t.err.str();
+}

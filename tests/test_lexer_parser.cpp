@@ -13,6 +13,12 @@ std::string sexpr(const node& n) {
         case node::string: return "\"" + n.text + "\"";
         case node::unary: return "(" + n.text + " " + sexpr(*n.kids[0]) + ")";
         case node::binary: return "(" + n.text + " " + sexpr(*n.kids[0]) + " " + sexpr(*n.kids[1]) + ")";
+        case node::chain: {
+            std::string s = sexpr(*n.kids[0]);
+            for (std::size_t i = 0; i < n.text.size(); ++i)
+                s = "(" + std::string(1, n.text[i]) + " " + s + " " + sexpr(*n.kids[i + 1]) + ")";
+            return s;
+        }
         case node::index: return "(at " + sexpr(*n.kids[0]) + " " + sexpr(*n.kids[1]) + ")";
         case node::assign: return "(:= " + n.text + " " + sexpr(*n.kids[0]) + ")";
         case node::call: case node::list: {

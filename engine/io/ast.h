@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace symrep::lang {
@@ -17,7 +18,9 @@ struct node {
         boolean,   ///< text: "true" / "false"
         ident,     ///< text: the name
         unary,     ///< text: "-" or "+"; kids[0]
-        binary,    ///< text: + - * / ^ = == != < > <= >=; kids[0], kids[1]
+        binary,    ///< text: ^ = == != < > <= >=; kids[0], kids[1]
+        chain,     ///< a run of + - (or * /), left to right: kids[0] op[0] kids[1] op[1] ...;
+                   ///< text holds one operator character per step, op_pos their places
         call,      ///< text: the function name; kids: the arguments
         index,     ///< kids[0][kids[1]]
         list,      ///< kids: the entries
@@ -28,6 +31,7 @@ struct node {
     std::vector<std::unique_ptr<node>> kids;
     int line = 0;
     int column = 0;
+    std::vector<std::pair<int, int>> op_pos;  ///< chain: line, column of each operator
 };
 
 using node_ptr = std::unique_ptr<node>;

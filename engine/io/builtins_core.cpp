@@ -258,9 +258,10 @@ void register_core_builtins(registry& r) {
         });
     add(r, "evalf", "evalf(e [, digits])",
         "Numeric value of e (of each coordinate of an element, of each entry of a list) with the given number of "
-        "decimal digits (default 20).",
+        "decimal digits (default: GiNaC's 17).",
         "", "evalf(pi, 30)", 1, 2, [](const builtin& b, const args_t& a, context&) {
-            const long digits = a.size() > 1 ? arg_int(a, 1, b, 1, 100000) : 20;
+            if (a.size() == 1) return map_value(a[0], b, [](const ex& x) { return x.evalf(); });
+            const long digits = arg_int(a, 1, b, 1, 100000);
             const long saved = GiNaC::Digits;
             GiNaC::Digits = digits;
             try {

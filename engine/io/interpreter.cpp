@@ -74,6 +74,16 @@ ex ex_binary(const std::string& op, const ex& a, const ex& b) {
         if (a.is_zero() && is_a<numeric>(b) && ex_to<numeric>(b).is_real() &&
             ex_to<numeric>(b).is_negative())
             throw domain_error("division by zero: 0 raised to a negative power");
+        if (is_a<numeric>(a) && is_a<numeric>(b) && ex_to<numeric>(a).is_rational() &&
+            ex_to<numeric>(b).is_integer()) {
+            // exact powers of numbers: refuse results of more than ~10^7 bits
+            const numeric& x = ex_to<numeric>(a);
+            const numeric k = abs(ex_to<numeric>(b));
+            const numeric bits = numeric(std::max(x.numer().int_length(), x.denom().int_length()));
+            if (k > numeric(10000000) || k * bits > numeric(10000000))
+                throw size_error("the exact power " + print_ex(a) + "^" + print_ex(b) +
+                                 " would have more than 10^7 bits");
+        }
         return finish(GiNaC::pow(a, b), a, b);
     }
     throw type_error("unknown operator " + op);
@@ -486,6 +496,20 @@ value session::eval_inner(const node& n) {
             value a = eval(*n.kids[0]);
             value b = eval(*n.kids[1]);
             return binary_op(n.text, a, b);
+        }
+        case node::chain: {
+            value acc = eval(*n.kids[0]);
+            for (std::size_t i = 0; i < n.text.size(); ++i) {
+                value b = eval(*n.kids[i + 1]);
+                try {
+                    acc = binary_op(std::string(1, n.text[i]), acc, b);
+                } catch (const std::exception& e) {
+                    throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.op_pos[i].first,
+                                                  n.op_pos[i].second},
+                                       std::current_exception());
+                }
+            }
+            return acc;
         }
         case node::call: return call(n);
         case node::index: {

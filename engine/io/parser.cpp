@@ -62,6 +62,7 @@ bool parser::at_end() const {
 }
 
 node_ptr parser::next_statement() {
+    depth_ = 0;
     while (peek().kind == tok::separator) get();
     if (peek().kind == tok::end) return nullptr;
     node_ptr s;
@@ -108,31 +109,45 @@ node_ptr parser::expr() {
     return a;
 }
 
+// Sums and products are flat chains (not left-deep trees), so that a long
+// sum needs no deep recursion to evaluate or to destroy.
 node_ptr parser::sum() {
     node_ptr a = product();
+    if (!is_op("+") && !is_op("-")) return a;
+    node_ptr n = make(node::chain, peek());
+    n->kids.push_back(std::move(a));
     while (is_op("+") || is_op("-")) {
         const token& op = get();
-        node_ptr n = make(node::binary, op, op.text);
-        n->kids.push_back(std::move(a));
+        n->text += op.text;
+        n->op_pos.emplace_back(op.line, op.column);
         n->kids.push_back(product());
-        a = std::move(n);
     }
-    return a;
+    n->line = n->op_pos[0].first;
+    n->column = n->op_pos[0].second;
+    return n;
 }
 
 node_ptr parser::product() {
     node_ptr a = unary();
+    if (!is_op("*") && !is_op("/")) return a;
+    node_ptr n = make(node::chain, peek());
+    n->kids.push_back(std::move(a));
     while (is_op("*") || is_op("/")) {
         const token& op = get();
-        node_ptr n = make(node::binary, op, op.text);
-        n->kids.push_back(std::move(a));
+        n->text += op.text;
+        n->op_pos.emplace_back(op.line, op.column);
         n->kids.push_back(unary());
-        a = std::move(n);
     }
-    return a;
+    return n;
 }
 
 node_ptr parser::unary() {
+    struct guard {
+        int& d;
+        explicit guard(int& x) : d(x) { ++d; }
+        ~guard() { --d; }
+    } g(depth_);
+    if (depth_ > 2000) fail(peek(), "expression nested too deeply (more than 2000 levels)");
     if (is_op("-") || is_op("+")) {
         const token& op = get();
         node_ptr n = make(node::unary, op, op.text);
@@ -156,7 +171,9 @@ node_ptr parser::power() {
 
 node_ptr parser::postfix() {
     node_ptr a = primary();
+    int chained = 0;
     while (is_op("[")) {
+        if (++chained > 2000) fail(peek(), "too many indices in a row (more than 2000)");
         const token& op = get();
         node_ptr n = make(node::index, op);
         n->kids.push_back(std::move(a));

@@ -51,6 +51,7 @@ private:
 
     std::vector<token> toks_;
     std::size_t pos_ = 0;
+    int depth_ = 0;  ///< nesting of unary/primary, limited to keep the stack safe
     std::string file_;
 };
 
