@@ -18,7 +18,9 @@ TEST(Printer, Numbers) {
     EXPECT_EQ(show(t, "-6/4"), "-3/2");
     EXPECT_EQ(show(t, "2 + 3*I"), "2 + 3*I");
     EXPECT_EQ(show(t, "2 - I"), "2 - I");
-    EXPECT_EQ(show(t, "-I/2"), "-1/2*I");
+    EXPECT_EQ(show(t, "-I/2"), "-I/2");
+    EXPECT_EQ(show(t, "1 + 3*I/2"), "1 + 3*I/2");
+    EXPECT_EQ(show(t, "2*I*x - I*y/3"), "2*I*x - I*y/3");
     EXPECT_EQ(show(t, "0.5"), "0.5");
     EXPECT_EQ(show(t, "pi"), "pi");
 }

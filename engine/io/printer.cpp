@@ -40,6 +40,8 @@ std::string ginac_text(const ex& e) {
     return os.str();
 }
 
+printed pr_product(const numeric& c, const std::vector<ex>& factors);
+
 // Real numbers: exact integers and rationals, or floats.
 printed pr_real(const numeric& x) {
     if (x.is_rational()) {
@@ -58,9 +60,14 @@ printed pr_numeric(const numeric& x) {
     const numeric re = x.real(), im = x.imag();
     auto imag_text = [](const numeric& v) -> std::string {  // v > 0
         if (v == 1) return "I";
+        if (v.is_rational()) return pr_product(ex_to<numeric>(ex(v) * GiNaC::I), {}).text;
         return paren(pr_real(v), l_product) + "*I";
     };
     if (re.is_zero()) {
+        if (im.is_rational()) {  // p*I/q, through the product printer
+            if (im.is_negative()) return {"-" + pr_product(-x, {}).text, l_product};
+            return pr_product(x, {});
+        }
         if (im.is_negative()) return {"-" + imag_text(-im), l_product};
         return {imag_text(im), im == 1 ? l_atom : l_product};
     }
@@ -162,6 +169,20 @@ printed pr_product(const numeric& c, const std::vector<ex>& factors) {
     std::sort(den.begin(), den.end());
     std::string coef_num, coef_den;
     bool coef_piece = false;
+    if (!c.is_real() && c.real().is_zero() && c.imag().is_rational()) {
+        // pure imaginary rational coefficient p*I/q: numbers first, then I
+        const numeric p = c.imag().numer(), q = c.imag().denom();
+        num.insert(num.begin(), "I");
+        if (p != 1) num.insert(num.begin(), num_str(p));
+        if (q != 1) den.insert(den.begin(), num_str(q));
+        std::string n;
+        for (std::size_t i = 0; i < num.size(); ++i) n += (i ? "*" : "") + num[i];
+        if (den.empty()) return {n, num.size() == 1 ? l_atom : l_product};
+        std::string d;
+        for (std::size_t i = 0; i < den.size(); ++i) d += (i ? "*" : "") + den[i];
+        if (den.size() > 1) d = "(" + d + ")";
+        return {n + "/" + d, l_product};
+    }
     if (c.is_rational()) {
         const numeric p = c.numer(), q = c.denom();
         if (p != 1 || num.empty()) coef_num = num_str(p);
