@@ -160,3 +160,13 @@ TEST(Cli, EveryBuiltinExampleRuns) {
     std::cout << "[ examples ] ran " << ran << ", skipped " << skipped.size()
               << (skipped.empty() ? "" : ":\n" + list);
 }
+
+// Two processes creating the symbols in opposite orders print the same text.
+TEST(Cli, OutputIsDeterministicAcrossProcesses) {
+    const std::string body = "expand((a + b + c)^3 - a*c); expand((c - a)^2*(b + 1)); [c*b*a, (c + a)^2]";
+    result r1 = run("-e 'q := [a, b, c]; " + body + "'");
+    result r2 = run("-e 'q := [c, b, a]; w := expand((z + y)^4); " + body + "'");
+    EXPECT_EQ(r1.status, 0);
+    EXPECT_EQ(r1.out, r2.out);
+    EXPECT_NE(r1.out.find("a^3 + 3*a^2*b + 3*a^2*c"), std::string::npos) << r1.out;
+}

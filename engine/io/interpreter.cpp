@@ -315,7 +315,9 @@ int session::run_file(const std::string& path) {
     dirs_.push_back(dir);
     int failed = 0;
     try {
-        failed = run_string(ss.str(), path);
+        // top-level files keep the name they were given; loaded files show
+        // the resolved path, so that the report says where they are
+        failed = run_string(ss.str(), dirs_.size() > 1 ? full : path);
     } catch (...) {
         dirs_.pop_back();
         throw;
