@@ -66,6 +66,7 @@ TEST(Printer, Elements) {
     EXPECT_EQ(show(t, "element(cplx(), [a + b, -2*c])"), "a + b - 2*c*j");
     EXPECT_EQ(show(t, "element(cplx(), [-1, x - y])"), "-1 + (x - y)*j");
     EXPECT_EQ(show(t, "element(cplx(), [0, 0])"), "0");
+    EXPECT_EQ(show(t, "element(cplx(), [1, -a - 2*b])"), "1 - (a + 2*b)*j");
 }
 
 // The same expressions built with the symbols created in opposite orders, in two

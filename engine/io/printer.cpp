@@ -376,6 +376,16 @@ std::string print_element(const element& w) {
             split_term(c, cc, rest);
             neg = looks_negative(cc);
         }
+        if (is_a<GiNaC::add>(c)) {  // a sum of negative terms prints as - (a + b)*name
+            bool all_neg = true;
+            for (std::size_t i = 0; i < c.nops() && all_neg; ++i) {
+                numeric cc;
+                std::vector<ex> rest;
+                split_term(c.op(i), cc, rest);
+                all_neg = looks_negative(cc);
+            }
+            neg = all_neg;
+        }
         if (neg) c = -c;
         std::string body;
         if (name == "1") {
