@@ -1,3 +1,108 @@
-// symrep -- the command-line program (placeholder until the language lands).
+// symrep -- the command-line program.
+//
+//   symrep FILE...          run scripts in one session
+//   symrep -e 'STATEMENTS'  run statements (may be repeated, mixed with files)
+//   symrep < FILE           read statements from standard input (not a terminal)
+//   symrep                  interactive prompt (standard input a terminal)
+//   symrep --doc            print the Markdown function reference
+// Exit status: 0 when every statement succeeded, 1 otherwise, 2 on bad usage.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
-int main() { std::cout << "symrep " SYMREP_VERSION "\n"; return 0; }
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <readline/history.h>
+#include <readline/readline.h>
+
+#include "io/interpreter.h"
+#include "io/lexer.h"
+
+namespace {
+
+const char* usage_text =
+    "usage: symrep [options] [FILE...]\n"
+    "\n"
+    "Runs symrep scripts in one session. With no FILE and no -e, reads statements\n"
+    "from standard input (an interactive prompt when it is a terminal).\n"
+    "\n"
+    "options:\n"
+    "  -e STATEMENTS   run STATEMENTS (may be given several times, in order with FILEs)\n"
+    "  --doc           print the Markdown reference of all functions and exit\n"
+    "  --version       print the version and exit\n"
+    "  --help          print this help and exit\n"
+    "\n"
+    "Errors are reported on standard error as FILE:LINE:COL: error: MESSAGE; the run\n"
+    "continues with the next statement. Exit status 1 if any statement failed.\n";
+
+int interactive(symrep::lang::session& s) {
+    std::cout << "symrep " SYMREP_VERSION " -- help() lists the functions, quit with Ctrl-D\n";
+    std::string pending;
+    for (;;) {
+        char* line = readline(pending.empty() ? "> " : "... ");
+        if (!line) break;
+        std::string l(line);
+        std::free(line);
+        if (!l.empty()) add_history(l.c_str());
+        pending += l + "\n";
+        if (symrep::lang::needs_more_input(pending)) continue;
+        s.run_string(pending, "<stdin>");
+        pending.clear();
+    }
+    std::cout << "\n";
+    return s.failures() ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::pair<bool, std::string>> jobs;  // (is_code, text/path)
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--help" || a == "-h") {
+            std::cout << usage_text;
+            return 0;
+        }
+        if (a == "--version") {
+            std::cout << "symrep " SYMREP_VERSION "\n";
+            return 0;
+        }
+        if (a == "--doc") {
+            symrep::lang::registry r;
+            symrep::lang::register_all_builtins(r);
+            std::cout << symrep::lang::reference_markdown(r);
+            return 0;
+        }
+        if (a == "-e") {
+            if (i + 1 >= argc) {
+                std::cerr << "symrep: -e needs an argument\n" << usage_text;
+                return 2;
+            }
+            jobs.emplace_back(true, argv[++i]);
+            continue;
+        }
+        if (a.size() > 1 && a[0] == '-') {
+            std::cerr << "symrep: unknown option " << a << "\n" << usage_text;
+            return 2;
+        }
+        jobs.emplace_back(false, a);
+    }
+    std::ios::sync_with_stdio(true);
+    symrep::lang::session s(std::cout, std::cerr);
+    if (jobs.empty()) {
+        if (isatty(STDIN_FILENO)) return interactive(s);
+        std::stringstream ss;
+        ss << std::cin.rdbuf();
+        s.run_string(ss.str(), "<stdin>");
+        return s.failures() ? 1 : 0;
+    }
+    for (const auto& [code, text] : jobs) {
+        if (code) s.run_string(text, "<command line>");
+        else s.run_file(text);
+    }
+    std::cout.flush();
+    return s.failures() ? 1 : 0;
+}

@@ -1,0 +1,548 @@
+// symrep/io/interpreter.cpp
+#include "io/interpreter.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "algebra/scalar.h"
+#include "io/parser.h"
+#include "io/printer.h"
+
+namespace symrep::lang {
+
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+namespace {
+
+std::string num_str(const GiNaC::numeric& x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+std::string article(const value& v) {
+    const std::string k = v.kind();
+    return (k == "expression" || k == "element" || k == "algebra" ? "an " : "a ") + k;
+}
+
+const char* verb(const std::string& op) {
+    if (op == "+") return "add";
+    if (op == "-") return "subtract";
+    if (op == "*") return "multiply";
+    if (op == "/") return "divide";
+    if (op == "^") return "raise";
+    if (op == "=") return "equate";
+    return "compare";
+}
+
+[[noreturn]] void bad_operands(const std::string& op, const value& a, const value& b) {
+    std::string msg = std::string("cannot ") + verb(op) + " " + article(a);
+    if (op == "^") msg += " to the power " + article(b);
+    else if (op == "/") msg += " by " + article(b);
+    else if (op == "-") msg = "cannot subtract " + article(b) + " from " + article(a);
+    else msg += " and " + article(b);
+    throw type_error(msg + " (operator '" + op + "')");
+}
+
+bool has_symbolic(const ex& e) {
+    if (is_a<GiNaC::symbol>(e)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_symbolic(e.op(i))) return true;
+    return false;
+}
+
+ex finish(const ex& e, const ex& a, const ex& b) {
+    if (is_a<GiNaC::matrix>(a) || is_a<GiNaC::matrix>(b)) return e.evalm();
+    return e;
+}
+
+ex ex_binary(const std::string& op, const ex& a, const ex& b) {
+    if (op == "+") return finish(a + b, a, b);
+    if (op == "-") return finish(a - b, a, b);
+    if (op == "*") return finish(a * b, a, b);
+    if (op == "/") {
+        if (b.is_zero()) throw domain_error("division by zero");
+        return finish(a / b, a, b);
+    }
+    if (op == "^") {
+        if (a.is_zero() && is_a<numeric>(b) && ex_to<numeric>(b).is_real() &&
+            ex_to<numeric>(b).is_negative())
+            throw domain_error("division by zero: 0 raised to a negative power");
+        if (is_a<numeric>(a) && is_a<numeric>(b) && ex_to<numeric>(a).is_rational() &&
+            ex_to<numeric>(b).is_integer()) {
+            // exact powers of numbers: refuse results of more than ~10^7 bits
+            const numeric& x = ex_to<numeric>(a);
+            const numeric k = abs(ex_to<numeric>(b));
+            const numeric bits = numeric(std::max(x.numer().int_length(), x.denom().int_length()));
+            if (k > numeric(10000000) || k * bits > numeric(10000000))
+                throw size_error("the exact power " + print_ex(a) + "^" + print_ex(b) +
+                                 " would have more than 10^7 bits");
+        }
+        return finish(GiNaC::pow(a, b), a, b);
+    }
+    throw type_error("unknown operator " + op);
+}
+
+long integer_exponent(const value& b) {
+    if (!b.is_ex() || !is_a<numeric>(b.as_ex()) || !ex_to<numeric>(b.as_ex()).is_integer())
+        throw type_error("the power of an element must be an integer, not " +
+                         (b.is_ex() ? print_ex(b.as_ex()) : article(b)));
+    const numeric k = ex_to<numeric>(b.as_ex());
+    if (abs(k) > numeric(1000000000L)) throw size_error("exponent " + num_str(k) + " is too large");
+    return k.to_long();
+}
+
+value list_map2(const std::string& op, const list& a, const list& b) {
+    if (a.size() != b.size())
+        throw type_error("cannot " + std::string(verb(op)) + " lists of different lengths (" +
+                         std::to_string(a.size()) + " and " + std::to_string(b.size()) + ")");
+    list r;
+    r.reserve(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) r.push_back(binary_op(op, a[i], b[i]));
+    return r;
+}
+
+value list_scale(const std::string& op, const value& s, const list& l, bool list_left) {
+    list r;
+    r.reserve(l.size());
+    for (const value& x : l) r.push_back(list_left ? binary_op(op, x, s) : binary_op(op, s, x));
+    return r;
+}
+
+bool both_real_numbers(const ex& a, const ex& b, numeric& x, numeric& y) {
+    ex ea = a, eb = b;
+    if (!is_a<numeric>(ea) && ea.info(GiNaC::info_flags::real) && !has_symbolic(ea)) ea = ea.evalf();
+    if (!is_a<numeric>(eb) && eb.info(GiNaC::info_flags::real) && !has_symbolic(eb)) eb = eb.evalf();
+    if (!is_a<numeric>(ea) || !is_a<numeric>(eb)) return false;
+    x = ex_to<numeric>(ea);
+    y = ex_to<numeric>(eb);
+    return x.is_real() && y.is_real();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// value arithmetic
+
+value negate(const value& a) {
+    if (a.is_ex()) {
+        const ex& e = a.as_ex();
+        return is_a<GiNaC::matrix>(e) ? ex((-e).evalm()) : ex(-e);
+    }
+    if (a.is_element()) return -a.as_element();
+    if (a.is_list()) {
+        list r;
+        for (const value& x : a.as_list()) r.push_back(negate(x));
+        return r;
+    }
+    throw type_error("cannot negate " + article(a));
+}
+
+bool values_equal(const value& a, const value& b) {
+    if (a.is_ex() && b.is_ex()) {
+        const ex& x = a.as_ex();
+        const ex& y = b.as_ex();
+        if (is_a<GiNaC::matrix>(x) || is_a<GiNaC::matrix>(y)) {
+            if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return false;
+            const auto& m = ex_to<GiNaC::matrix>(x);
+            const auto& n = ex_to<GiNaC::matrix>(y);
+            if (m.rows() != n.rows() || m.cols() != n.cols()) return false;
+            for (unsigned i = 0; i < m.rows(); ++i)
+                for (unsigned j = 0; j < m.cols(); ++j)
+                    if (!is_zero_scalar(m(i, j) - n(i, j))) return false;
+            return true;
+        }
+        if (is_a<GiNaC::relational>(x) || is_a<GiNaC::relational>(y)) {
+            if (!is_a<GiNaC::relational>(x) || !is_a<GiNaC::relational>(y)) return false;
+            using F = GiNaC::info_flags;
+            for (unsigned f : {F::relation_equal, F::relation_not_equal, F::relation_less,
+                               F::relation_less_or_equal, F::relation_greater, F::relation_greater_or_equal})
+                if (x.info(f) != y.info(f)) return false;
+            return is_zero_scalar(x.op(0) - y.op(0)) && is_zero_scalar(x.op(1) - y.op(1));
+        }
+        return is_zero_scalar(x - y);
+    }
+    if (a.is_element() && b.is_element()) {
+        if (a.as_element().parent().name() != b.as_element().parent().name()) return false;
+        return a.as_element() == b.as_element();
+    }
+    if (a.is_element() && b.is_ex()) return a.as_element() == element::scalar(a.as_element().parent_ptr(), b.as_ex());
+    if (a.is_ex() && b.is_element()) return values_equal(b, a);
+    if (a.is_list() && b.is_list()) {
+        const list& x = a.as_list();
+        const list& y = b.as_list();
+        if (x.size() != y.size()) return false;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (!values_equal(x[i], y[i])) return false;
+        return true;
+    }
+    if (a.is_bool() && b.is_bool()) return a.as_bool() == b.as_bool();
+    if (a.is_string() && b.is_string()) return a.as_string() == b.as_string();
+    if (a.is_algebra() && b.is_algebra()) return a.as_algebra()->name() == b.as_algebra()->name();
+    if (a.is_none() && b.is_none()) return true;
+    return false;
+}
+
+value binary_op(const std::string& op, const value& a, const value& b) {
+    if (op == "==") return values_equal(a, b);
+    if (op == "!=") return !values_equal(a, b);
+    if (op == "=") {
+        if (a.is_ex() && b.is_ex()) return ex(GiNaC::relational(a.as_ex(), b.as_ex(), GiNaC::relational::equal));
+        bad_operands(op, a, b);
+    }
+    if (op == "<" || op == ">" || op == "<=" || op == ">=") {
+        if (!a.is_ex() || !b.is_ex()) bad_operands(op, a, b);
+        numeric x, y;
+        if (both_real_numbers(a.as_ex(), b.as_ex(), x, y)) {
+            if (op == "<") return x < y;
+            if (op == ">") return x > y;
+            if (op == "<=") return x <= y;
+            return x >= y;
+        }
+        using R = GiNaC::relational;
+        const R::operators o = op == "<" ? R::less : op == ">" ? R::greater : op == "<=" ? R::less_or_equal
+                                                                                        : R::greater_or_equal;
+        return ex(R(a.as_ex(), b.as_ex(), o));
+    }
+    // expressions
+    if (a.is_ex() && b.is_ex()) return ex_binary(op, a.as_ex(), b.as_ex());
+    // elements
+    if (a.is_element() && b.is_element()) {
+        const element& x = a.as_element();
+        const element& y = b.as_element();
+        if (op == "+") return x + y;
+        if (op == "-") return x - y;
+        if (op == "*") return x * y;
+        if (op == "/") return x / y;
+        bad_operands(op, a, b);
+    }
+    if (a.is_element() && b.is_ex()) {
+        const element& x = a.as_element();
+        const ex& s = b.as_ex();
+        if (is_a<GiNaC::matrix>(s)) bad_operands(op, a, b);
+        if (op == "+") return x + element::scalar(x.parent_ptr(), s);
+        if (op == "-") return x - element::scalar(x.parent_ptr(), s);
+        if (op == "*") return x * s;
+        if (op == "/") {
+            if (is_zero_scalar(s)) throw domain_error("division by zero");
+            return x / s;
+        }
+        if (op == "^") return x.pow(integer_exponent(b));
+    }
+    if (a.is_ex() && b.is_element()) {
+        const ex& s = a.as_ex();
+        const element& y = b.as_element();
+        if (is_a<GiNaC::matrix>(s)) bad_operands(op, a, b);
+        if (op == "+") return element::scalar(y.parent_ptr(), s) + y;
+        if (op == "-") return element::scalar(y.parent_ptr(), s) - y;
+        if (op == "*") return s * y;
+        if (op == "/") return s * y.inverse();
+        bad_operands(op, a, b);
+    }
+    // lists
+    if (a.is_list() && b.is_list() && (op == "+" || op == "-")) return list_map2(op, a.as_list(), b.as_list());
+    if (a.is_list() && (b.is_ex() || b.is_element()) && (op == "*" || op == "/"))
+        return list_scale(op, b, a.as_list(), true);
+    if (b.is_list() && (a.is_ex() || a.is_element()) && op == "*") return list_scale(op, a, b.as_list(), false);
+    if (a.is_list() && b.is_list() && op == "*")
+        throw type_error("cannot multiply two lists (use matrix(...) for matrix products)");
+    // strings
+    if (a.is_string() && b.is_string() && op == "+") return a.as_string() + b.as_string();
+    bad_operands(op, a, b);
+}
+
+// ---------------------------------------------------------------------------
+// session
+
+session::session(std::ostream& out, std::ostream& err) : out_(&out), err_(&err) {
+    register_all_builtins(reg_);
+}
+session::session() : session(std::cout, std::cerr) {}
+session::~session() = default;
+
+GiNaC::symbol session::symbol(const std::string& name) {
+    auto it = symbols_.find(name);
+    if (it != symbols_.end()) return it->second;
+    // A plain (complex-domain) symbol for now: context::symbol and arg_symbol
+    // (io/builtins.h) return GiNaC::symbol by value, which would slice a
+    // realsymbol into a *different* symbol (x - x would not cancel). See
+    // docs/language.md, "Symbols".
+    GiNaC::symbol s(name);
+    symbols_.emplace(name, s);
+    return s;
+}
+
+void session::set(const std::string& name, value v) { vars_[name] = std::move(v); }
+
+const value* session::get(const std::string& name) const {
+    auto it = vars_.find(name);
+    return it == vars_.end() ? nullptr : &it->second;
+}
+
+std::string session::resolve_path(const std::string& path) const {
+    namespace fs = std::filesystem;
+    fs::path p(path);
+    if (p.is_absolute()) return path;
+    const std::string& dir = dirs_.empty() ? base_dir_ : dirs_.back();
+    if (dir.empty()) return path;
+    return (fs::path(dir) / p).string();
+}
+
+void session::report(const source_location& where, const std::string& msg) {
+    ++failures_;
+    *err_ << where.file << ":" << where.line << ":" << where.column << ": error: " << msg << "\n";
+    err_->flush();
+}
+
+int session::run_file(const std::string& path) {
+    const std::string full = resolve_path(path);
+    std::ifstream in(full, std::ios::binary);
+    if (!in) {
+        ++failures_;
+        *err_ << path << ": error: cannot open file '" << full << "'\n";
+        return 1;
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    namespace fs = std::filesystem;
+    std::string dir = fs::path(full).parent_path().string();
+    dirs_.push_back(dir);
+    int failed = 0;
+    try {
+        // top-level files keep the name they were given; loaded files show
+        // the resolved path, so that the report says where they are
+        failed = run_string(ss.str(), dirs_.size() > 1 ? full : path);
+    } catch (...) {
+        dirs_.pop_back();
+        throw;
+    }
+    dirs_.pop_back();
+    return failed;
+}
+
+int session::run_string(const std::string& text, const std::string& name) {
+    const int before = failures_;
+    parser p(text, name);
+    files_.push_back(name);
+    while (!p.at_end()) {
+        node_ptr s;
+        try {
+            s = p.next_statement();
+        } catch (const syntax_error& e) {
+            report(e.where, std::string("syntax error: ") + e.what());
+            p.recover();
+            continue;
+        }
+        if (!s) continue;
+        try {
+            exec(*s, true);
+        } catch (const script_error& e) {
+            report(e.where, e.what());
+        }
+    }
+    files_.pop_back();
+    out_->flush();
+    return failures_ - before;
+}
+
+value session::evaluate(const std::string& text) {
+    parser p(text, "<evaluate>");
+    files_.push_back("<evaluate>");
+    value last;
+    try {
+        while (!p.at_end()) {
+            node_ptr s;
+            try {
+                s = p.next_statement();
+            } catch (const syntax_error& e) {
+                throw script_error(std::string("syntax error: ") + e.what(), e.where, std::current_exception());
+            }
+            if (!s) continue;
+            if (s->kind == node::assign) {
+                exec(*s, false);
+                last = *get(s->text);
+            } else {
+                last = eval(*s);
+            }
+        }
+    } catch (...) {
+        files_.pop_back();
+        throw;
+    }
+    files_.pop_back();
+    return last;
+}
+
+void session::exec(const node& stmt, bool echo) {
+    if (stmt.kind == node::assign) {
+        value v = eval(*stmt.kids[0]);
+        if (v.is_none())
+            throw script_error("cannot assign nothing to '" + stmt.text + "': the right side has no value",
+                               {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+        set(stmt.text, std::move(v));
+        return;
+    }
+    value v = eval(stmt);
+    if (echo && !v.is_none()) *out_ << print_value(v, true) << "\n";
+}
+
+value session::eval(const node& n) {
+    try {
+        return eval_inner(n);
+    } catch (const script_error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+                           std::current_exception());
+    } catch (...) {
+        throw script_error("unknown internal error", {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+                           std::current_exception());
+    }
+}
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> d(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t prev = d[0];
+        d[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cur = d[j];
+            d[j] = std::min({d[j] + 1, d[j - 1] + 1, prev + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            prev = cur;
+        }
+    }
+    return d[b.size()];
+}
+
+long index_value(const value& v, std::size_t size) {
+    if (!v.is_ex() || !is_a<numeric>(v.as_ex()) || !ex_to<numeric>(v.as_ex()).is_integer())
+        throw type_error("an index must be an integer, not " + (v.is_ex() ? print_ex(v.as_ex()) : article(v)));
+    const numeric k = ex_to<numeric>(v.as_ex());
+    if (k.is_negative() || k >= numeric(static_cast<long>(size)))
+        throw type_error("index " + num_str(k) + " out of range: valid indices are 0.." +
+                         (size == 0 ? std::string("(none, it is empty)") : std::to_string(size - 1)));
+    return k.to_long();
+}
+
+}  // namespace
+
+value session::call(const node& n) {
+    const builtin* b = reg_.find(n.text);
+    if (!b) {
+        std::vector<std::pair<std::size_t, std::string>> near;
+        for (const builtin* c : reg_.all()) {
+            const std::size_t d = edit_distance(n.text, c->name);
+            const bool prefix = n.text.size() >= 3 && c->name.rfind(n.text, 0) == 0;
+            if (d <= std::max<std::size_t>(1, n.text.size() / 3) || prefix) near.emplace_back(prefix ? 0 : d, c->name);
+        }
+        std::sort(near.begin(), near.end());
+        std::string msg = "unknown function '" + n.text + "'";
+        if (!near.empty()) {
+            msg += "; did you mean ";
+            for (std::size_t i = 0; i < near.size() && i < 5; ++i) msg += (i ? ", " : "") + near[i].second;
+            msg += "?";
+        } else {
+            msg += " (help() lists all functions)";
+        }
+        throw type_error(msg);
+    }
+    std::vector<value> args;
+    args.reserve(n.kids.size());
+    for (const auto& k : n.kids) args.push_back(eval(*k));
+    if (args.size() < b->min_args || args.size() > b->max_args) {
+        std::string expected;
+        if (b->min_args == b->max_args) expected = std::to_string(b->min_args);
+        else if (b->max_args == SIZE_MAX) expected = "at least " + std::to_string(b->min_args);
+        else expected = std::to_string(b->min_args) + " to " + std::to_string(b->max_args);
+        throw type_error(b->name + ": expects " + expected + " argument" + (expected == "1" ? "" : "s") +
+                         ", got " + std::to_string(args.size()) + " (usage: " + b->signature + ")");
+    }
+    return b->fn(args, *this);
+}
+
+value session::eval_inner(const node& n) {
+    switch (n.kind) {
+        case node::number: {
+            const bool is_float = n.text.find_first_of(".eE") != std::string::npos;
+            if (!is_float) return ex(numeric(n.text.c_str()));
+            return ex(numeric(n.text.c_str()).evalf());
+        }
+        case node::string: return n.text;
+        case node::boolean: return n.text == "true";
+        case node::ident: {
+            if (const value* v = get(n.text)) return *v;
+            if (n.text == "pi") return ex(GiNaC::Pi);
+            if (n.text == "I") return ex(GiNaC::I);
+            if (n.text == "Euler") return ex(GiNaC::Euler);
+            if (n.text == "Catalan") return ex(GiNaC::Catalan);
+            return ex(symbol(n.text));
+        }
+        case node::unary: {
+            value a = eval(*n.kids[0]);
+            if (n.text == "+") {
+                if (a.is_ex() || a.is_element() || a.is_list()) return a;
+                throw type_error("unary '+' needs a number, expression, element or list, not " + article(a));
+            }
+            return negate(a);
+        }
+        case node::binary: {
+            value a = eval(*n.kids[0]);
+            value b = eval(*n.kids[1]);
+            return binary_op(n.text, a, b);
+        }
+        case node::chain: {
+            value acc = eval(*n.kids[0]);
+            for (std::size_t i = 0; i < n.text.size(); ++i) {
+                value b = eval(*n.kids[i + 1]);
+                try {
+                    acc = binary_op(std::string(1, n.text[i]), acc, b);
+                } catch (const std::exception& e) {
+                    throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.op_pos[i].first,
+                                                  n.op_pos[i].second},
+                                       std::current_exception());
+                }
+            }
+            return acc;
+        }
+        case node::call: return call(n);
+        case node::index: {
+            value a = eval(*n.kids[0]);
+            value k = eval(*n.kids[1]);
+            if (a.is_list()) return a.as_list()[index_value(k, a.as_list().size())];
+            if (a.is_element()) return a.as_element()[index_value(k, a.as_element().dim())];
+            if (a.is_ex() && is_a<GiNaC::matrix>(a.as_ex())) {
+                const auto& m = ex_to<GiNaC::matrix>(a.as_ex());
+                const long r = index_value(k, m.rows());
+                list row;
+                for (unsigned c = 0; c < m.cols(); ++c) row.push_back(m(r, c));
+                return row;
+            }
+            if (a.is_ex() && is_a<GiNaC::lst>(a.as_ex())) return a.as_ex().op(index_value(k, a.as_ex().nops()));
+            throw type_error("cannot index " + article(a) + " (indexing works on lists, elements and matrices)");
+        }
+        case node::list: {
+            list l;
+            l.reserve(n.kids.size());
+            for (const auto& k : n.kids) {
+                value v = eval(*k);
+                if (v.is_none()) throw type_error("a list entry has no value");
+                l.push_back(std::move(v));
+            }
+            return l;
+        }
+        case node::assign:
+            throw type_error("an assignment ':=' is a statement, not an expression");
+    }
+    throw type_error("unknown syntax node");
+}
+
+}  // namespace symrep::lang

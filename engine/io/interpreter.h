@@ -1,0 +1,116 @@
+// symrep/io/interpreter.h -- the evaluator of the symrep language.
+//
+// A session holds the variables, the real symbols (one GiNaC realsymbol per
+// name), the builtin registry and the output streams. It runs scripts statement
+// by statement: a statement that fails is reported on the error stream as
+//     FILE:LINE:COL: error: MESSAGE
+// and the run goes on with the next statement. See docs/language.md.
+#pragma once
+
+#include <exception>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/ast.h"
+#include "io/builtins.h"
+#include "io/error.h"
+#include "io/value.h"
+
+namespace symrep::lang {
+
+/// An error raised while evaluating a statement, with the place of the construct
+/// that failed. what() is the bare message; `original` is the exception first
+/// thrown (a symrep::error subclass, a GiNaC std::exception, ...), so that
+/// library users can rethrow it to test its type.
+class script_error : public error {
+public:
+    script_error(const std::string& msg, source_location loc, std::exception_ptr orig = nullptr)
+        : error(msg), where(std::move(loc)), original(std::move(orig)) {}
+    source_location where;
+    std::exception_ptr original;
+};
+
+class session : public context {
+public:
+    /// A session writing results to `out` and error reports to `err`; all
+    /// builtins of register_all_builtins are registered.
+    explicit session(std::ostream& out, std::ostream& err);
+    /// A session writing to std::cout / std::cerr.
+    session();
+    ~session() override;
+
+    // --- context -------------------------------------------------------------
+    GiNaC::symbol symbol(const std::string& name) override;
+    std::ostream& out() override { return *out_; }
+    std::ostream& err() { return *err_; }
+
+    // --- running scripts -----------------------------------------------------
+    /// Runs the statements of `text`; `name` is the FILE shown in error reports
+    /// ("<stdin>", "<command line>", a path). Expression statements print their
+    /// value to out(). Returns how many statements failed (including failures in
+    /// files it load()s).
+    int run_string(const std::string& text, const std::string& name);
+    /// Runs a script file (relative paths: relative to the folder of the script
+    /// being run, else to the base directory). An unreadable file counts as one
+    /// failure, reported as "FILE: error: cannot open ...".
+    int run_file(const std::string& path);
+    /// Evaluates the statements of `text` silently (no echo; print() still
+    /// writes to out()) and returns the value of the last one. Throws
+    /// script_error (syntax errors too) at the first failure.
+    value evaluate(const std::string& text);
+    /// Total number of failed statements since the session started.
+    int failures() const { return failures_; }
+
+    // --- state ---------------------------------------------------------------
+    void set(const std::string& name, value v);
+    /// The variable's value, or nullptr when unassigned.
+    const value* get(const std::string& name) const;
+    /// The builtins; tests and embedders may add their own.
+    registry& builtins() { return reg_; }
+    const registry& builtins() const { return reg_; }
+    /// Folder against which relative paths of load()/run_file are resolved when
+    /// no script is running (default: the current working directory).
+    void set_base_directory(const std::string& dir) { base_dir_ = dir; }
+    /// Resolves a path given in a script: relative to the running script's folder.
+    std::string resolve_path(const std::string& path) const;
+    /// Depth of nested run_file/load calls (load refuses beyond 64).
+    std::size_t load_depth() const { return dirs_.size(); }
+
+    /// Evaluates one expression node (used by builtins that take unevaluated
+    /// arguments; public for tests).
+    value eval(const node& n);
+
+private:
+    value eval_inner(const node& n);
+    value call(const node& n);
+    void report(const source_location& where, const std::string& msg);
+    void exec(const node& stmt, bool echo);
+
+    std::ostream* out_;
+    std::ostream* err_;
+    registry reg_;
+    std::map<std::string, value> vars_;
+    std::map<std::string, GiNaC::symbol> symbols_;
+    std::vector<std::string> dirs_;   ///< folders of the scripts being run
+    std::vector<std::string> files_;  ///< names of the scripts being run
+    std::string base_dir_;
+    int failures_ = 0;
+};
+
+/// Registers every builtin of the engine (builtins_all.cpp).
+void register_all_builtins(registry& r);
+
+/// Markdown reference of all builtins, one section per registry section (the
+/// output of `symrep --doc`, included verbatim in docs/language.md).
+std::string reference_markdown(const registry& r);
+
+/// The value arithmetic of the language, shared with builtins: op is one of
+/// + - * / ^ = == != < > <= >=. Throws type_error / algebra_error.
+value binary_op(const std::string& op, const value& a, const value& b);
+value negate(const value& a);
+/// Language equality (==): exact for expressions (normal(a - b) == 0), elements, lists.
+bool values_equal(const value& a, const value& b);
+
+}  // namespace symrep::lang

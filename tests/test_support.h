@@ -1,0 +1,71 @@
+// tests/test_support.h -- helpers shared by the language tests: two tiny
+// test-only algebras (the complex numbers C and the dual numbers D, j^2 = 0)
+// registered as builtins cplx() and dual(), and a value-to-ex shortcut.
+#pragma once
+
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "algebra/algebra.h"
+#include "algebra/element.h"
+#include "io/interpreter.h"
+
+namespace symrep::test {
+
+/// C as a real algebra: basis 1, j with j^2 = -1.
+class complex_test_algebra : public algebra {
+public:
+    std::string name() const override { return "cplx_test"; }
+    std::size_t dim() const override { return 2; }
+    std::string basis_name(std::size_t k) const override { return k == 0 ? "1" : "j"; }
+    coeffs multiply(const coeffs& a, const coeffs& b) const override {
+        return {GiNaC::expand(a[0] * b[0] - a[1] * b[1]), GiNaC::expand(a[0] * b[1] + a[1] * b[0])};
+    }
+};
+
+/// The dual numbers: basis 1, j with j^2 = 0 (j is a zero divisor).
+class dual_test_algebra : public algebra {
+public:
+    std::string name() const override { return "dual_test"; }
+    std::size_t dim() const override { return 2; }
+    std::string basis_name(std::size_t k) const override { return k == 0 ? "1" : "j"; }
+    coeffs multiply(const coeffs& a, const coeffs& b) const override {
+        return {GiNaC::expand(a[0] * b[0]), GiNaC::expand(a[0] * b[1] + a[1] * b[0])};
+    }
+};
+
+inline void register_test_algebras(lang::registry& r) {
+    auto add = [&](const char* name, algebra_ptr A) {
+        lang::builtin b;
+        b.name = name;
+        b.signature = std::string(name) + "()";
+        b.summary = "test-only algebra";
+        b.section = "Test";
+        b.fn = [A](const std::vector<lang::value>&, lang::context&) { return lang::value(A); };
+        r.add(std::move(b));
+    };
+    add("cplx", std::make_shared<complex_test_algebra>());
+    add("dual", std::make_shared<dual_test_algebra>());
+}
+
+/// A session writing into string streams, with the test algebras registered.
+struct test_session {
+    std::ostringstream out, err;
+    lang::session s{out, err};
+    test_session() { register_test_algebras(s.builtins()); }
+    GiNaC::ex ex(const std::string& text) {
+        lang::value v = s.evaluate(text);
+        EXPECT_TRUE(v.is_ex()) << text << " gave a " << v.kind();
+        return v.is_ex() ? v.as_ex() : GiNaC::ex(0);
+    }
+    lang::value val(const std::string& text) { return s.evaluate(text); }
+    /// Runs `text` as a script; returns the number of failed statements.
+    int run(const std::string& text) { return s.run_string(text, "t.sr"); }
+};
+
+/// Mathematical equality of expressions.
+inline bool same(const GiNaC::ex& a, const GiNaC::ex& b) { return GiNaC::normal(a - b).is_zero(); }
+
+}  // namespace symrep::test
