@@ -18,7 +18,7 @@ namespace {
 
 class mock_context : public context {
 public:
-    GiNaC::symbol symbol(const std::string& name) override {
+    GiNaC::ex symbol(const std::string& name) override {
         auto it = syms_.find(name);
         if (it == syms_.end()) it = syms_.emplace(name, GiNaC::realsymbol(name)).first;
         return it->second;
@@ -26,7 +26,7 @@ public:
     std::ostream& out() override { return out_; }
 
 private:
-    std::map<std::string, GiNaC::symbol> syms_;
+    std::map<std::string, GiNaC::ex> syms_;
     std::ostringstream out_;
 };
 

@@ -100,7 +100,7 @@ long arg_int(const std::vector<value>& args, std::size_t i, const builtin& b, lo
     return k.to_long();
 }
 
-GiNaC::symbol arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b) {
+const GiNaC::symbol& arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b) {
     const value& v = checked(args, i, b);
     if (!v.is_ex() || !GiNaC::is_a<GiNaC::symbol>(v.as_ex())) wrong(args, i, b, "a symbol");
     return GiNaC::ex_to<GiNaC::symbol>(v.as_ex());

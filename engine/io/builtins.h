@@ -24,8 +24,10 @@ namespace symrep::lang {
 class context {
 public:
     virtual ~context() = default;
-    /// The session's real symbol with this name (created on first use).
-    virtual GiNaC::symbol symbol(const std::string& name) = 0;
+    /// The session's real symbol with this name (created on first use). Returned as an
+    /// ex: copying a GiNaC::realsymbol into a GiNaC::symbol would slice it into a
+    /// different (complex) symbol.
+    virtual GiNaC::ex symbol(const std::string& name) = 0;
     /// Where print() and friends write.
     virtual std::ostream& out() = 0;
 };
@@ -62,8 +64,9 @@ const list& arg_list(const std::vector<value>& args, std::size_t i, const builti
 const std::string& arg_string(const std::vector<value>& args, std::size_t i, const builtin& b);
 /// A non-negative integer argument (exact integer expression).
 long arg_int(const std::vector<value>& args, std::size_t i, const builtin& b, long min, long max);
-/// A GiNaC symbol argument.
-GiNaC::symbol arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// A GiNaC symbol argument (a reference into args: keep it as a reference, since
+/// copying a realsymbol into a GiNaC::symbol slices it).
+const GiNaC::symbol& arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b);
 /// A list of expressions (each entry must be an expression).
 std::vector<GiNaC::ex> arg_ex_list(const std::vector<value>& args, std::size_t i, const builtin& b);
 

@@ -101,7 +101,7 @@ void register_algebra_builtins(registry& r) {
         "The monic characteristic polynomial det(X I - [w]) of an element (of a square matrix) in the symbol X.",
         "(II.1.20)", "charpoly(element(multicomplex(1), [1, 2]), X)", 2, 2,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const GiNaC::symbol X = arg_symbol(a, 1, b);
+            const GiNaC::symbol& X = arg_symbol(a, 1, b);
             if (a[0].is_element()) return a[0].as_element().charpoly(X);
             const GiNaC::matrix m = as_matrix(arg_ex(a, 0, b), b);
             return GiNaC::expand((m.rows() % 2 ? -1 : 1) * m.charpoly(X));
@@ -122,7 +122,7 @@ void register_algebra_builtins(registry& r) {
         "(Cor. II.1.1)", "evaluate(X^2 + 1, X, basis(multicomplex(1), 1))", 3, 3,
         [](const builtin& b, const args_t& a, context&) {
             const ex& p = arg_ex(a, 0, b);
-            const GiNaC::symbol X = arg_symbol(a, 1, b);
+            const GiNaC::symbol& X = arg_symbol(a, 1, b);
             return value(arg_element(a, 2, b).evaluate(p, X));
         });
     add(r, "structure_constants", "structure_constants(A)",

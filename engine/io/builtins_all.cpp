@@ -10,14 +10,9 @@ namespace symrep::lang {
 void register_all_builtins(registry& r) {
     register_core_builtins(r);
     register_algebra_builtins(r);
-    // ---- INTEGRATION: algebra families -------------------------------------
-    // Add the family groups here once their builtins_<family>.cpp files are in
-    // the tree (each is declared in io/builtins.h):
-    //   register_multicomplex_builtins(r);
-    //   register_sobrero_builtins(r);
-    //   register_walsh_builtins(r);
-    //   register_polynomial_builtins(r);
-    // ------------------------------------------------------------------------
+    register_check_builtins(r);
+    register_sobrero_builtins(r);
+    register_walsh_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

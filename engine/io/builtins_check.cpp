@@ -45,7 +45,7 @@ void register_check_builtins(registry& r) {
            "Checks a condition: a boolean such as `a == b` (exact, mathematical equality) or an "
            "equation `a = b` (holds when a - b simplifies to 0). Prints nothing when it holds; "
            "otherwise the statement fails with the message, so the script exits with status 1.",
-           "", "expect(sin(x)^2 + cos(x)^2 == 1, \"Pythagoras\")", "Checks", 1, 2,
+           "", "expect((x + 1)^2 == x^2 + 2*x + 1, \"binomial square\")", "Checks", 1, 2,
            [](const std::vector<value>& args, context&) -> value {
                builtin b{"expect", "expect(condition [, message])", "", "", "", "", 1, 2, {}};
                if (holds(args[0], b)) return {};

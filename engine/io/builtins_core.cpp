@@ -114,7 +114,7 @@ void add_elementary(registry& r, const char* name, const char* what, const std::
 
 value seq_values(const builtin& b, const args_t& a, context&) {
     const value& body = a[0];
-    const GiNaC::symbol k = arg_symbol(a, 1, b);
+    const GiNaC::symbol& k = arg_symbol(a, 1, b);
     list out;
     auto at = [&](const ex& kv) {
         GiNaC::lst s{k == kv};
@@ -187,7 +187,7 @@ void register_core_builtins(registry& r) {
         "The n-th derivative (default 1) of an expression, of each coordinate of an element, or of each entry "
         "of a list, with respect to the symbol x.",
         "", "diff(sin(x)*x, x)", 2, 3, [](const builtin& b, const args_t& a, context&) {
-            const GiNaC::symbol x = arg_symbol(a, 1, b);
+            const GiNaC::symbol& x = arg_symbol(a, 1, b);
             const long n = a.size() > 2 ? arg_int(a, 2, b, 0, 1000) : 1;
             return map_value(a[0], b, [&](const ex& e) { return e.diff(x, static_cast<unsigned>(n)); });
         });

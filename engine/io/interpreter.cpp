@@ -266,14 +266,12 @@ session::session(std::ostream& out, std::ostream& err) : out_(&out), err_(&err) 
 session::session() : session(std::cout, std::cerr) {}
 session::~session() = default;
 
-GiNaC::symbol session::symbol(const std::string& name) {
+GiNaC::ex session::symbol(const std::string& name) {
     auto it = symbols_.find(name);
     if (it != symbols_.end()) return it->second;
-    // A plain (complex-domain) symbol for now: context::symbol and arg_symbol
-    // (io/builtins.h) return GiNaC::symbol by value, which would slice a
-    // realsymbol into a *different* symbol (x - x would not cancel). See
-    // docs/language.md, "Symbols".
-    GiNaC::symbol s(name);
+    // Script symbols are real: the algebras of symrep are real algebras, and
+    // real_part/conjugate of expressions in them must simplify.
+    GiNaC::ex s = GiNaC::realsymbol(name);
     symbols_.emplace(name, s);
     return s;
 }

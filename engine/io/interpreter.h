@@ -42,7 +42,7 @@ public:
     ~session() override;
 
     // --- context -------------------------------------------------------------
-    GiNaC::symbol symbol(const std::string& name) override;
+    GiNaC::ex symbol(const std::string& name) override;
     std::ostream& out() override { return *out_; }
     std::ostream& err() { return *err_; }
 
@@ -92,7 +92,7 @@ private:
     std::ostream* err_;
     registry reg_;
     std::map<std::string, value> vars_;
-    std::map<std::string, GiNaC::symbol> symbols_;
+    std::map<std::string, GiNaC::ex> symbols_;
     std::vector<std::string> dirs_;   ///< folders of the scripts being run
     std::vector<std::string> files_;  ///< names of the scripts being run
     std::string base_dir_;
