@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -31,11 +32,14 @@ std::string slurp(const std::string& path) {
 
 /// Runs `args` (shell syntax) with the symrep binary; stdin from `input` if given.
 result run(const std::string& args, const std::string* input = nullptr) {
-    const std::string dir = ::testing::TempDir();
-    const std::string err_path = dir + "/symrep_cli_err.txt";
+    // Unique file names: ctest runs the tests of this file in parallel processes.
+    static int counter = 0;
+    const std::string dir = ::testing::TempDir() + "/symrep_cli_" + std::to_string(getpid()) +
+                            "_" + std::to_string(counter++);
+    const std::string err_path = dir + "_err.txt";
     std::string cmd = std::string("'") + SYMREP_BINARY + "' " + args + " 2>'" + err_path + "'";
     if (input) {
-        const std::string in_path = dir + "/symrep_cli_in.txt";
+        const std::string in_path = dir + "_in.txt";
         std::ofstream(in_path, std::ios::binary) << *input;
         cmd += " <'" + in_path + "'";
     } else {

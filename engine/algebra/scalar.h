@@ -18,9 +18,23 @@ inline bool is_zero_scalar(const GiNaC::ex& x) { return x.is_zero() || GiNaC::no
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
 
-/// Bring an exact coefficient to its simplest stored form (expanded, normalized
-/// rationals); identity for doubles.
-inline GiNaC::ex tidy(const GiNaC::ex& x) { return GiNaC::normal(GiNaC::expand(x)); }
+/// True when x contains a function call (exp, cos, log, ...).
+inline bool has_function_call(const GiNaC::ex& x) {
+    if (GiNaC::is_a<GiNaC::function>(x)) return true;
+    for (std::size_t k = 0; k < x.nops(); ++k)
+        if (has_function_call(x.op(k))) return true;
+    return false;
+}
+
+/// Bring an exact coefficient to its simplest stored form: rational functions of
+/// symbols are expanded and normalized (one fraction, common factors cancelled);
+/// expressions with function calls, such as the closed forms of exp(w t), are only
+/// expanded, so that they stay sums of exponentials and trigonometric terms instead
+/// of becoming one fraction over exp(...). Identity for doubles.
+inline GiNaC::ex tidy(const GiNaC::ex& x) {
+    const GiNaC::ex e = GiNaC::expand(x);
+    return has_function_call(e) ? e : GiNaC::normal(e);
+}
 inline double tidy(double x) { return x; }
 
 /// Scalar from an integer, for both paths.

@@ -381,7 +381,7 @@ void register_core_builtins(registry& r) {
         "Runs another script in the same session (variables are shared). A relative path is relative to the "
         "folder of the running script (or the working directory). Failures inside it are reported and counted "
         "like any other.",
-        "", "load(\"examples/hello.sr\")", 1, 1, [](const builtin& b, const args_t& a, context& c) {
+        "", "load(\"examples/hello.symrep\")", 1, 1, [](const builtin& b, const args_t& a, context& c) {
             auto* s = dynamic_cast<session*>(&c);
             if (!s) throw type_error(b.name + ": not available here");
             if (s->load_depth() >= 64) throw size_error(b.name + ": more than 64 nested loads");
