@@ -197,10 +197,10 @@ bool multicomplex::is_zero_divisor(const coeffs& w) const { return !zero_divisor
 namespace {
 [[noreturn]] void throw_zero_divisor(const multicomplex& A, const char* what,
                                      std::vector<std::size_t> ranks) {
-    throw zero_divisor_error(std::string(what) + " of a zero divisor in " + A.name() +
-                                 ": the idempotent component(s) of rank " + rank_list(ranks) +
-                                 " vanish (a_k = b_k = 0, III.1.55), so w e_k = 0 (III.1.56)",
-                             std::move(ranks));
+    const std::string msg = std::string(what) + " of a zero divisor in " + A.name() +
+                            ": the idempotent component(s) of rank " + rank_list(ranks) +
+                            " vanish (a_k = b_k = 0, III.1.55), so w e_k = 0 (III.1.56)";
+    throw zero_divisor_error(msg, std::move(ranks));
 }
 }  // namespace
 
@@ -244,13 +244,25 @@ std::pair<coeffs, coeffs> multicomplex::semiexponential(const coeffs& w) const {
     return {from_component_pairs(r), from_component_pairs(phi)};
 }
 
+namespace {
+// Zero test that also knows cos^2 + sin^2 = 1: the squared moduli of components
+// of exp(theta) are sums of cos(x)^2 and sin(x)^2, which normal() keeps apart.
+bool is_zero_trig(const ex& x) {
+    if (is_zero_scalar(x)) return true;
+    const GiNaC::wildcard u(0);
+    const ex y = GiNaC::expand(x).subs(GiNaC::pow(GiNaC::sin(u), 2) == 1 - GiNaC::pow(GiNaC::cos(u), 2),
+                                       GiNaC::subs_options::algebraic);
+    return is_zero_scalar(y);
+}
+}  // namespace
+
 // (III.1.95) r_0 = r_1 = ... = r_{2^n-1} != 0 (compared as r_p^2).
 bool multicomplex::is_special_type(const coeffs& w, bool) const {
     const auto c = component_pairs(w);
     const ex r0 = tidy(c[0].norm2());
-    if (is_zero_scalar(r0)) return false;
+    if (is_zero_trig(r0)) return false;
     for (const auto& z : c)
-        if (!is_zero_scalar(z.norm2() - r0)) return false;
+        if (!is_zero_trig(z.norm2() - r0)) return false;
     return true;
 }
 

@@ -136,7 +136,8 @@ namespace {
     for (std::size_t k = 0; k < ranks.size() && k < 16; ++k) os << (k ? ", " : "") << ranks[k];
     if (ranks.size() > 16) os << ", ... (" << ranks.size() << " in all)";
     os << " vanish (a_k = b_k = 0, III.1.55), so w e_k = 0 (III.1.56)";
-    throw zero_divisor_error(os.str(), std::move(ranks));
+    const std::string msg = os.str();
+    throw zero_divisor_error(msg, std::move(ranks));
 }
 }  // namespace
 
