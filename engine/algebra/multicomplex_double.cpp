@@ -118,14 +118,20 @@ multicomplex_d::vector multicomplex_d::multiply_structure(const vector& a, const
     return r;
 }
 
-std::vector<std::size_t> multicomplex_d::zero_divisor_ranks(const vector& w, double rel_tol) const {
-    const auto c = idempotent_components(w);
+namespace {
+// (III.1.55) ranks of the components with |c_p| <= rel_tol * max_q |c_q|.
+std::vector<std::size_t> vanishing_ranks(const multicomplex_d::components& c, double rel_tol) {
     double m = 0.0;
     for (const auto& z : c) m = std::max(m, std::abs(z));
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < c.size(); ++p)
         if (std::abs(c[p]) <= rel_tol * m) r.push_back(p);
     return r;
+}
+}  // namespace
+
+std::vector<std::size_t> multicomplex_d::zero_divisor_ranks(const vector& w, double rel_tol) const {
+    return vanishing_ranks(idempotent_components(w), rel_tol);
 }
 
 namespace {
@@ -143,9 +149,9 @@ namespace {
 
 // (III.1.57)
 multicomplex_d::vector multicomplex_d::inverse(const vector& w, double rel_tol) const {
-    auto ranks = zero_divisor_ranks(w, rel_tol);
+    auto c = idempotent_components(w);
+    auto ranks = vanishing_ranks(c, rel_tol);
     if (!ranks.empty()) throw_zero_divisor(n_, "inverse", std::move(ranks));
-    auto c = multicomplex_components<double>(w, n_);
     for (auto& z : c) z = multicomplex_component_inverse<double>(z.real(), z.imag());
     return multicomplex_from_components<double>(std::move(c), n_);
 }
@@ -159,9 +165,9 @@ multicomplex_d::vector multicomplex_d::exp(const vector& w, double t) const {
 
 // (III.1.53)
 multicomplex_d::vector multicomplex_d::log(const vector& w, double rel_tol) const {
-    auto ranks = zero_divisor_ranks(w, rel_tol);
+    auto c = idempotent_components(w);
+    auto ranks = vanishing_ranks(c, rel_tol);
     if (!ranks.empty()) throw_zero_divisor(n_, "logarithm", std::move(ranks));
-    auto c = multicomplex_components<double>(w, n_);
     for (auto& z : c) z = multicomplex_component_log<double>(z.real(), z.imag());
     return multicomplex_from_components<double>(std::move(c), n_);
 }
