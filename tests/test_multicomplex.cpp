@@ -618,6 +618,14 @@ TEST(Multicomplex, SpecialTypeIII_1_93_95_TheoremIII_1_3_1) {
     }
     // a special-type element is its own decomposition
     EXPECT_EQ(A->special_type_decomposition(s2).size(), 1u);
+    // (III.1.86-89) u_k = i0^{kb_0}...in^{kb_n} = exp(sum_p i_p kb_p pi/2), kb = Gray digits
+    for (std::size_t k = 0; k < N; ++k) {
+        coeffs x = A->zero();
+        const std::size_t gk = multicomplex_gray(2, k);
+        for (unsigned p = 0; p <= 2; ++p)
+            if (digit(2, gk, p)) x = algebra::add(x, algebra::scale(GiNaC::Pi / 2, A->imag_unit(p)));
+        EXPECT_TRUE(eq(A->exp(x, 1), A->gray_basis(k))) << k;
+    }
 }
 
 // ------------------------------------------------ III.4.2a generating element

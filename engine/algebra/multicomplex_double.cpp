@@ -121,11 +121,12 @@ multicomplex_d::vector multicomplex_d::multiply_structure(const vector& a, const
 namespace {
 // (III.1.55) ranks of the components with |c_p| <= rel_tol * max_q |c_q|.
 std::vector<std::size_t> vanishing_ranks(const multicomplex_d::components& c, double rel_tol) {
-    double m = 0.0;
-    for (const auto& z : c) m = std::max(m, std::abs(z));
+    double m2 = 0.0;  // squared moduli: no hypot per component
+    for (const auto& z : c) m2 = std::max(m2, std::norm(z));
+    const double t2 = rel_tol * rel_tol * m2;
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < c.size(); ++p)
-        if (std::abs(c[p]) <= rel_tol * m) r.push_back(p);
+        if (std::norm(c[p]) <= t2) r.push_back(p);
     return r;
 }
 }  // namespace
