@@ -64,13 +64,16 @@ bool eq(const coeffs& a, const coeffs& b) { return algebra::equal(a, b); }
 // exp/cos/atan2 that GiNaC does not simplify symbolically).
 bool num_eq(const coeffs& a, const coeffs& b, double tol = 1e-30) {
     if (a.size() != b.size()) return false;
+    const long saved = GiNaC::Digits;  // restored: other tests share the process
     GiNaC::Digits = 40;
-    for (std::size_t k = 0; k < a.size(); ++k) {
+    bool ok = true;
+    for (std::size_t k = 0; k < a.size() && ok; ++k) {
         const ex d = GiNaC::evalf(a[k] - b[k]);
-        if (!GiNaC::is_a<GiNaC::numeric>(d)) return false;
-        if (GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(d)) > GiNaC::numeric(tol)) return false;
+        ok = GiNaC::is_a<GiNaC::numeric>(d) &&
+             GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(d)) <= GiNaC::numeric(tol);
     }
-    return true;
+    GiNaC::Digits = saved;
+    return ok;
 }
 
 // Element with the given idempotent components (a_p, b_p).
