@@ -101,6 +101,9 @@ TEST(Multicomplex, NamesAndBasis) {
     for (unsigned k = 0; k <= 2; ++k) EXPECT_TRUE(eq(A->imag_unit(k), A->basis_vector(std::size_t{4} >> k)));
     algebra_ptr base = A;  // usable as algebra_ptr
     EXPECT_EQ(base->name(), "multicomplex(2)");
+    EXPECT_EQ(base->shared_from_this().get(), base.get());
+    EXPECT_EQ(multicomplex::make(0)->dim(), 2u);  // n = 0: C itself
+    EXPECT_EQ(multicomplex::make(0)->basis_name(1), "i0");
 }
 
 // (III.1.7) the fast product agrees with the structure constants, on basis
@@ -145,6 +148,9 @@ TEST(Multicomplex, CommutativeAssociativeUnital) {
     EXPECT_TRUE(eq(A->multiply(A->multiply(a, b), c), A->multiply(a, A->multiply(b, c))));
     EXPECT_TRUE(eq(A->multiply(a, A->unit()), a));
     EXPECT_TRUE(eq(A->multiply(a, b), direct_product(3, a, b)));
+    auto B = multicomplex::make(5);  // a larger exact case against the structure constants
+    const coeffs x = random_rational(*B, 4), y = random_rational(*B, 5);
+    EXPECT_TRUE(eq(B->multiply(x, y), direct_product(5, x, y)));
 }
 
 // ------------------------------------------------------- III.1.10-14 Gray basis
