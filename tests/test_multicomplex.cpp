@@ -706,8 +706,8 @@ TEST(Multicomplex, BadInput) {
 namespace {
 struct mock_context : lang::context {
     std::ostringstream os;
-    std::map<std::string, GiNaC::symbol> syms;
-    GiNaC::symbol symbol(const std::string& name) override {
+    std::map<std::string, GiNaC::ex> syms;
+    GiNaC::ex symbol(const std::string& name) override {
         auto it = syms.find(name);
         if (it == syms.end()) it = syms.emplace(name, GiNaC::realsymbol(name)).first;
         return it->second;

@@ -7,6 +7,8 @@
 // as explicit pairs (re, im) of exact or double scalars.
 #pragma once
 
+#include <utility>
+
 namespace symrep {
 
 template <class T>

@@ -13,6 +13,7 @@ void register_all_builtins(registry& r) {
     register_check_builtins(r);
     register_sobrero_builtins(r);
     register_walsh_builtins(r);
+    register_multicomplex_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {
