@@ -1,0 +1,492 @@
+// tests/test_examples.cpp -- the example derivation scripts of examples/*.symrep.
+//
+// 1. Every script in examples/ runs through the symrep program with exit status 0
+//    and nothing on stderr (each script checks its own results with expect()).
+// 2. Selected printed results are parsed back (GiNaC::parser; basis names such as
+//    eps, j, u0, i0 become symbols, so an element reads as a polynomial in them) and
+//    compared BY VALUE with an independent computation in C++: the same algebra
+//    rebuilt here from its multiplication table in the thesis (a structure-constant
+//    algebra that uses only the general methods of algebra.h, never the family's fast
+//    paths), exp by its Taylor series in 50-digit floats, idempotents and components by
+//    their defining formulas. Closed forms with exp/cos/atan are compared numerically
+//    (30 digits, tolerance 1e-25) after substituting rational values for the symbols.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include <ginac/ginac.h>
+#include <ginac/parser.h>
+
+#include "algebra/algebra.h"
+
+using namespace symrep;
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::numeric;
+
+namespace {
+
+// ---------------------------------------------------------------------------------
+// running a script
+
+struct run_result {
+    std::string out, err;
+    int status = -1;
+    double seconds = 0;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+std::string examples_dir() { return std::string(SYMREP_SOURCE_DIR) + "/examples"; }
+
+/// Runs one script through SYMREP_BINARY (stdout, stderr, exit status); cached per process.
+const run_result& run_script(const std::string& name) {
+    static std::map<std::string, run_result> cache;
+    auto it = cache.find(name);
+    if (it != cache.end()) return it->second;
+    static int counter = 0;
+    // Unique names: ctest runs the tests of this file in parallel processes.
+    const std::string err_path = ::testing::TempDir() + "/symrep_examples_" +
+                                 std::to_string(getpid()) + "_" + std::to_string(counter++) +
+                                 "_err.txt";
+    const std::string cmd = std::string("'") + SYMREP_BINARY + "' '" + examples_dir() + "/" +
+                            name + "' 2>'" + err_path + "' </dev/null";
+    run_result r;
+    const auto t0 = std::chrono::steady_clock::now();
+    FILE* p = popen(cmd.c_str(), "r");
+    if (p) {
+        char buf[4096];
+        std::size_t n;
+        while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+        const int st = pclose(p);
+        r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.err = slurp(err_path);
+    std::remove(err_path.c_str());
+    return cache.emplace(name, std::move(r)).first->second;
+}
+
+std::vector<std::string> lines_of(const std::string& s) {
+    std::vector<std::string> v;
+    std::istringstream in(s);
+    for (std::string l; std::getline(in, l);) v.push_back(l);
+    return v;
+}
+
+/// The line printed right after the heading line `heading` (exactly equal).
+std::string after_heading(const std::string& out, const std::string& heading) {
+    const auto ls = lines_of(out);
+    for (std::size_t k = 0; k + 1 < ls.size(); ++k)
+        if (ls[k] == heading) return ls[k + 1];
+    ADD_FAILURE() << "no line '" << heading << "' in the output";
+    return "0";
+}
+
+/// In the line starting with `prefix`, the text after `label` (after the prefix when no
+/// label is given) up to the next double space: print() items are separated that way.
+std::string inline_value(const std::string& out, const std::string& prefix,
+                         const std::string& label = "") {
+    for (const auto& l : lines_of(out))
+        if (l.rfind(prefix, 0) == 0) {
+            std::size_t at = prefix.size();
+            if (!label.empty()) {
+                at = l.find(label);
+                if (at == std::string::npos) break;
+                at += label.size();
+            }
+            std::string rest = l.substr(at);
+            const auto cut = rest.find("  ");
+            return cut == std::string::npos ? rest : rest.substr(0, cut);
+        }
+    ADD_FAILURE() << "no line starting with '" << prefix << "' (with '" << label << "') in the output";
+    return "0";
+}
+
+// ---------------------------------------------------------------------------------
+// reading printed values back
+
+/// Symbols of a script (real) and of basis names, shared by the parser and the C++ side.
+struct symbols {
+    std::map<std::string, ex> table;
+    ex operator()(const std::string& name) {
+        auto it = table.find(name);
+        if (it == table.end()) it = table.emplace(name, GiNaC::realsymbol(name)).first;
+        return it->second;
+    }
+    /// The symbol itself (a reference: copying it into a GiNaC::symbol would slice the
+    /// realsymbol into a different type that no longer compares equal).
+    const GiNaC::realsymbol& sym(const std::string& name) {
+        (*this)(name);
+        return ex_to<GiNaC::realsymbol>(table.at(name));
+    }
+};
+
+/// Parses printed text; every name must be known to S (strict: a stray name is an error).
+ex parse(symbols& S, const std::string& text) {
+    GiNaC::symtab tab;
+    for (const auto& [k, v] : S.table) tab[k] = v;
+    tab["pi"] = GiNaC::Pi;
+    GiNaC::parser p(tab, /*strict=*/true);
+    return p(text);
+}
+
+/// Splits "[a, [b, c], d]" at the top-level commas (the text without the outer brackets).
+std::vector<std::string> split_list(const std::string& text) {
+    std::string s = text;
+    while (!s.empty() && s.front() == ' ') s.erase(s.begin());
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    EXPECT_TRUE(s.size() >= 2 && s.front() == '[' && s.back() == ']') << "not a list: " << text;
+    s = s.substr(1, s.size() - 2);
+    std::vector<std::string> parts;
+    int depth = 0;
+    std::string cur;
+    for (char c : s) {
+        if (c == '(' || c == '[') ++depth;
+        if (c == ')' || c == ']') --depth;
+        if (c == ',' && depth == 0) {
+            parts.push_back(cur);
+            cur.clear();
+        } else {
+            cur += c;
+        }
+    }
+    if (!cur.empty()) parts.push_back(cur);
+    return parts;
+}
+
+std::vector<ex> parse_list(symbols& S, const std::string& text) {
+    std::vector<ex> v;
+    for (const auto& p : split_list(text)) v.push_back(parse(S, p));
+    return v;
+}
+
+/// "matrix([[a, b], [c, d]])" -> rows.
+std::vector<std::vector<ex>> parse_matrix(symbols& S, const std::string& text) {
+    const std::string head = "matrix(";
+    EXPECT_EQ(text.rfind(head, 0), 0u) << text;
+    const std::string inner = text.substr(head.size(), text.size() - head.size() - 1);
+    std::vector<std::vector<ex>> rows;
+    for (const auto& r : split_list(inner)) rows.push_back(parse_list(S, r));
+    return rows;
+}
+
+// ---------------------------------------------------------------------------------
+// the algebras, rebuilt from their multiplication tables
+
+/// A structure-constant algebra: only the product is given, everything else is the
+/// general method of algebra.h (canonical matrix, charpoly, Krylov minpoly, inverse).
+/// basis_monomial(k) is how basis element k prints, as a monomial in basis symbols.
+class table_algebra : public algebra {
+public:
+    table_algebra(std::string name, std::vector<std::vector<coeffs>> gamma, std::vector<ex> monomials)
+        : name_(std::move(name)), gamma_(std::move(gamma)), mono_(std::move(monomials)) {}
+    std::string name() const override { return name_; }
+    std::size_t dim() const override { return gamma_.size(); }
+    coeffs multiply(const coeffs& a, const coeffs& b) const override {
+        coeffs r(dim(), ex(0));
+        for (std::size_t i = 0; i < dim(); ++i) {
+            if (a[i].is_zero()) continue;
+            for (std::size_t j = 0; j < dim(); ++j) {
+                if (b[j].is_zero()) continue;
+                for (std::size_t k = 0; k < dim(); ++k)
+                    if (!gamma_[i][j][k].is_zero()) r[k] += a[i] * b[j] * gamma_[i][j][k];
+            }
+        }
+        for (auto& x : r) x = GiNaC::expand(x);
+        return r;
+    }
+    const ex& monomial(std::size_t k) const { return mono_[k]; }
+    /// The element as a polynomial in the basis symbols (how symrep prints it).
+    ex as_polynomial(const coeffs& c) const {
+        ex p = 0;
+        for (std::size_t k = 0; k < dim(); ++k) p += c[k] * mono_[k];
+        return p;
+    }
+    /// The coordinates of a printed element (a polynomial in the basis symbols).
+    coeffs coords_of(const ex& printed, const std::vector<ex>& basis_symbols) const {
+        const ex e = GiNaC::expand(printed);
+        coeffs c(dim());
+        for (std::size_t k = 0; k < dim(); ++k) {
+            ex x = e;
+            for (const auto& s : basis_symbols) x = x.coeff(s, mono_[k].degree(s));
+            c[k] = x;
+        }
+        EXPECT_TRUE(GiNaC::expand(as_polynomial(c) - e).is_zero())
+            << "the printed element " << printed << " has a term outside the basis of " << name_;
+        return c;
+    }
+
+private:
+    std::string name_;
+    std::vector<std::vector<coeffs>> gamma_;
+    std::vector<ex> mono_;
+};
+
+using table_ptr = std::shared_ptr<const table_algebra>;
+
+/// Generalized Sobrero algebra (III.2.4): index k is eps^k, index n+1+k is j eps^k;
+/// (j^a eps^k)(j^b eps^l) = (-1)^(ab) j^(a xor b) eps^(k+l), eps^(n+1) = 0.
+table_ptr sobrero_table(unsigned n, symbols& S) {
+    const std::size_t N = 2 * (n + 1);
+    std::vector<std::vector<coeffs>> g(N, std::vector<coeffs>(N));
+    std::vector<ex> mono(N);
+    for (std::size_t x = 0; x < N; ++x) {
+        const unsigned a = x > n, k = unsigned(x % (n + 1));
+        mono[x] = GiNaC::pow(S("j"), a) * GiNaC::pow(S("eps"), k);
+        for (std::size_t y = 0; y < N; ++y) {
+            const unsigned b = y > n, l = unsigned(y % (n + 1));
+            g[x][y] = coeffs(N, ex(0));
+            if (k + l <= n) g[x][y][(a ^ b) * (n + 1) + k + l] = (a && b) ? -1 : 1;
+        }
+    }
+    return std::make_shared<table_algebra>("sobrero_table", g, mono);
+}
+
+/// Product of u_k over the set bits of p, bit 2^(bits-1-k) standing for name+k.
+ex bit_monomial(std::size_t p, unsigned bits, const std::string& name, symbols& S) {
+    ex m = 1;
+    for (unsigned k = 0; k < bits; ++k)
+        if (p >> (bits - 1 - k) & 1) m *= S(name + std::to_string(k));
+    return m;
+}
+
+/// Walsh algebra W (III.3.6): w_p w_q = w_(p xor q); basis names u0 (most significant bit) ...
+/// With complex = true, the real form of W* (III.3.51): (i0^a w_p)(i0^b w_q) =
+/// (-1)^(ab) i0^(a xor b) w_(p xor q), index 2^n + p is i0 w_p.
+table_ptr walsh_table(unsigned n, bool complex, symbols& S) {
+    const std::size_t h = std::size_t(1) << n, N = complex ? 2 * h : h;
+    std::vector<std::vector<coeffs>> g(N, std::vector<coeffs>(N));
+    std::vector<ex> mono(N);
+    for (std::size_t x = 0; x < N; ++x) {
+        const std::size_t a = x / h, p = x % h;
+        mono[x] = GiNaC::pow(S("i0"), unsigned(a)) * bit_monomial(p, n, "u", S);
+        for (std::size_t y = 0; y < N; ++y) {
+            const std::size_t b = y / h, q = y % h;
+            g[x][y] = coeffs(N, ex(0));
+            g[x][y][(a ^ b) * h + (p ^ q)] = (a && b) ? -1 : 1;
+        }
+    }
+    return std::make_shared<table_algebra>(complex ? "walsh_complex_table" : "walsh_table", g, mono);
+}
+
+/// Multicomplex algebra (x)C^(n+1) (III.1.7): e_p e_q = (-1)^<p,q> e_(p xor q), e_p =
+/// i0^p0 ... in^pn with p0 the most significant of n+1 bits.
+table_ptr multicomplex_table(unsigned n, symbols& S) {
+    const std::size_t N = std::size_t(2) << n;
+    std::vector<std::vector<coeffs>> g(N, std::vector<coeffs>(N));
+    std::vector<ex> mono(N);
+    for (std::size_t p = 0; p < N; ++p) {
+        mono[p] = bit_monomial(p, n + 1, "i", S);
+        for (std::size_t q = 0; q < N; ++q) {
+            g[p][q] = coeffs(N, ex(0));
+            g[p][q][p ^ q] = std::popcount(p & q) % 2 ? -1 : 1;
+        }
+    }
+    return std::make_shared<table_algebra>("multicomplex_table", g, mono);
+}
+
+std::vector<ex> basis_symbols(symbols& S, std::initializer_list<const char*> names) {
+    std::vector<ex> v;
+    for (const char* n : names) v.push_back(S(n));
+    return v;
+}
+
+// ---------------------------------------------------------------------------------
+// comparisons
+
+bool same(const ex& a, const ex& b) { return GiNaC::normal(GiNaC::expand(a - b)).is_zero(); }
+
+::testing::AssertionResult same_coeffs(const coeffs& a, const coeffs& b) {
+    if (a.size() != b.size()) return ::testing::AssertionFailure() << "sizes differ";
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (!same(a[k], b[k]))
+            return ::testing::AssertionFailure() << "coordinate " << k << ": " << a[k] << " vs " << b[k];
+    return ::testing::AssertionSuccess();
+}
+
+/// |a - b| <= tol after evaluation at 30 digits (complex values allowed).
+::testing::AssertionResult near(const ex& a, const ex& b, double tol = 1e-25) {
+    GiNaC::Digits = 50;
+    const ex d = GiNaC::evalf(a - b);
+    if (!GiNaC::is_a<numeric>(d)) return ::testing::AssertionFailure() << "not numeric: " << d;
+    const double m = GiNaC::abs(ex_to<numeric>(d)).to_double();
+    if (m <= tol) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << a << " vs " << b << " differ by " << m;
+}
+
+::testing::AssertionResult near_coeffs(const coeffs& a, const coeffs& b, double tol = 1e-25) {
+    if (a.size() != b.size()) return ::testing::AssertionFailure() << "sizes differ";
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        auto r = near(a[k], b[k], tol);
+        if (!r) return r << " (coordinate " << k << ")";
+    }
+    return ::testing::AssertionSuccess();
+}
+
+coeffs subs_all(const coeffs& c, const GiNaC::exmap& m) {
+    coeffs r;
+    for (const auto& x : c) r.push_back(x.subs(m));
+    return r;
+}
+
+/// exp(w) by its Taylor series in 50-digit floats (w numeric).
+coeffs exp_series(const table_algebra& A, const coeffs& w) {
+    GiNaC::Digits = 50;
+    coeffs wf;
+    for (const auto& x : w) wf.push_back(GiNaC::evalf(x));
+    coeffs term = A.unit(), sum = A.unit();
+    for (int k = 1; k <= 400; ++k) {
+        term = algebra::scale(numeric(1, k), A.multiply(term, wf));
+        for (auto& x : term) x = GiNaC::evalf(x);
+        sum = algebra::add(sum, term);
+        static const numeric tiny("1e-45");
+        bool small = true;
+        for (const auto& x : term)
+            if (GiNaC::abs(ex_to<numeric>(x)) > tiny) small = false;
+        if (small && k > 10) break;
+    }
+    return sum;
+}
+
+struct ScriptRun : ::testing::TestWithParam<std::string> {};
+
+std::vector<std::string> example_scripts() {
+    std::vector<std::string> v;
+    for (const auto& f : std::filesystem::directory_iterator(examples_dir()))
+        if (f.path().extension() == ".symrep") v.push_back(f.path().filename().string());
+    std::sort(v.begin(), v.end());
+    return v;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------
+// 1. every script runs cleanly
+
+TEST(Examples, TheFolderHasTheFamilyScripts) {
+    const auto v = example_scripts();
+    for (const char* s : {"sobrero.symrep", "walsh.symrep", "multicomplex.symrep"})
+        EXPECT_NE(std::find(v.begin(), v.end(), s), v.end()) << s;
+}
+
+TEST_P(ScriptRun, ExitsZeroWithEmptyStderr) {
+    const run_result& r = run_script(GetParam());
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_FALSE(r.out.empty());
+    // the scripts take well under 2 s; a generous bound catches a pathological slowdown
+    EXPECT_LT(r.seconds, 20.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllScripts, ScriptRun, ::testing::ValuesIn(example_scripts()),
+                         [](const ::testing::TestParamInfo<std::string>& i) {
+                             std::string n = i.param.substr(0, i.param.find('.'));
+                             for (auto& c : n)
+                                 if (!isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return n;
+                         });
+
+// ---------------------------------------------------------------------------------
+// 2. printed results, by value
+
+TEST(ExamplesSobrero, PrintedResultsByValue) {
+    const run_result& r = run_script("sobrero.symrep");
+    ASSERT_EQ(r.status, 0) << r.err;
+    symbols S;
+    auto A = sobrero_table(2, S);
+    const auto B = basis_symbols(S, {"eps", "j"});
+    auto elem = [&](const std::string& text) { return A->coords_of(parse(S, text), B); };
+    const coeffs w{S("a0"), S("a1"), S("a2"), S("b0"), S("b1"), S("b2")};
+    const GiNaC::realsymbol& X = S.sym("X");
+    S("t");
+
+    // (III.2.6) the element and (III.2.9) its canonical matrix
+    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "(III.2.6) w =")), w));
+    const auto M = parse_matrix(S, after_heading(r.out, "(III.2.9) [w] ="));
+    const GiNaC::matrix Mw = A->canonical_matrix(w);
+    ASSERT_EQ(M.size(), 6u);
+    for (unsigned i = 0; i < 6; ++i)
+        for (unsigned k = 0; k < 6; ++k) EXPECT_TRUE(same(M[i][k], Mw(i, k))) << i << "," << k;
+
+    // (III.2.12) characteristic polynomial, against det(X I - [w]) of the table algebra
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.2.12) charpoly(w, X) =")), A->charpoly(w, X)));
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "det [w] =")), A->determinant(w)));
+
+    // inverse and minimal polynomials of numeric elements (general linear algebra)
+    const coeffs v = elem(inline_value(r.out, "v = "));
+    EXPECT_TRUE(same_coeffs(v, {1, 2, 3, 1, 0, -1}));
+    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "inverse(v) =")), A->inverse(v)));
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "minpoly(v, X) =")), A->minpoly(v, X)));
+    const coeffs u{1, 0, 5, 1, 0, 0};
+    const ex mu = parse(S, after_heading(r.out, "minpoly(1 + j + 5*eps^2, X) ="));
+    EXPECT_TRUE(same(mu, A->minpoly(u, X)));
+    EXPECT_EQ(mu.degree(X), 4);
+
+    // (III.2.16-18) semiexponential form: A_k = |xi_k| exactly, phi_k in [0, 2 pi) numerically
+    const auto se = split_list(after_heading(r.out, "(III.2.16) semiexponential(v) = [rho, theta] ="));
+    ASSERT_EQ(se.size(), 2u);
+    const coeffs rho = elem(se[0]), theta = elem(se[1]);
+    for (unsigned k = 0; k < 3; ++k) {
+        EXPECT_TRUE(same(rho[k], GiNaC::sqrt(v[k] * v[k] + v[3 + k] * v[3 + k]))) << k;
+        EXPECT_TRUE(rho[3 + k].is_zero() && theta[k].is_zero());
+        const ex phi = GiNaC::evalf(theta[3 + k]);
+        EXPECT_TRUE(phi >= 0 && phi < GiNaC::evalf(2 * GiNaC::Pi)) << phi;
+        EXPECT_TRUE(near(rho[k] * GiNaC::cos(theta[3 + k]), v[k]));
+        EXPECT_TRUE(near(rho[k] * GiNaC::sin(theta[3 + k]), v[3 + k]));
+    }
+
+    // Thm III.2.2.1: the product of the two special-type elements, by the table
+    const coeffs w1 = elem(inline_value(r.out, "w1 = "));
+    const coeffs w2 = elem(inline_value(r.out, "w1 = ", "w2 = "));
+    const coeffs w12 = elem(inline_value(r.out, "w1*w2 = "));
+    const coeffs w1e{1, 2, 1, 1, 2, 1}, w2e{0, 0, 0, 3, 0, 1};
+    EXPECT_TRUE(same_coeffs(w1, w1e));
+    EXPECT_TRUE(same_coeffs(w2, w2e));
+    EXPECT_TRUE(same_coeffs(w12, A->multiply(w1e, w2e)));
+
+    // (III.2.24) the decomposition of c: sums to c, each part on one line through 0
+    const coeffs c = elem(inline_value(r.out, "c = "));
+    const auto parts = split_list(after_heading(r.out, "(III.2.24) special_type_decomposition(c) ="));
+    ASSERT_EQ(parts.size(), 2u);
+    const coeffs d0 = elem(parts[0]), d1 = elem(parts[1]);
+    EXPECT_TRUE(same_coeffs(algebra::add(d0, d1), c));
+    for (const coeffs* d : {&d0, &d1})
+        for (unsigned k = 0; k < 3; ++k)
+            for (unsigned l = 0; l < 3; ++l)
+                EXPECT_TRUE(same((*d)[k] * (*d)[3 + l], (*d)[l] * (*d)[3 + k]));
+
+    // exp(w t): at rational values of the symbols, against the Taylor series of exp
+    const ex E = parse(S, after_heading(r.out, "exp(w t) ="));
+    const GiNaC::exmap at{{S("a0"), numeric(1, 3)}, {S("a1"), numeric(-2, 5)}, {S("a2"), numeric(3, 4)},
+                          {S("b0"), numeric(5, 4)}, {S("b1"), numeric(1, 2)}, {S("b2"), numeric(-1, 3)},
+                          {S("t"), numeric(7, 10)}};
+    const coeffs wt = algebra::scale(numeric(7, 10), subs_all(w, at));
+    EXPECT_TRUE(near_coeffs(subs_all(A->coords_of(E, B), at), exp_series(*A, wt)));
+
+    // log(v): the Taylor series of exp at the printed logarithm gives back v
+    const coeffs L = elem(after_heading(r.out, "log(v) ="));
+    EXPECT_TRUE(near_coeffs(exp_series(*A, L), v));
+
+    // (III.4.13) the generating element and its minimal polynomial, by the general method
+    const coeffs g = elem(inline_value(r.out, "(III.4.13) d = "));
+    EXPECT_TRUE(same_coeffs(g, {0, 1, 0, 1, 0, 0}));
+    EXPECT_TRUE(same(parse(S, inline_value(r.out, "(III.4.13) d = ", "minpoly(d, X) = ")),
+                     A->minpoly(g, X)));
+}
