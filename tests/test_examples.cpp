@@ -144,7 +144,12 @@ ex parse(symbols& S, const std::string& text) {
     for (const auto& [k, v] : S.table) tab[k] = v;
     tab["pi"] = GiNaC::Pi;
     GiNaC::parser p(tab, /*strict=*/true);
-    return p(text);
+    try {
+        return p(text);
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "cannot parse '" << text << "': " << e.what();
+        return GiNaC::symbol("unparsable");
+    }
 }
 
 /// Splits "[a, [b, c], d]" at the top-level commas (the text without the outer brackets).
@@ -489,4 +494,243 @@ TEST(ExamplesSobrero, PrintedResultsByValue) {
     EXPECT_TRUE(same_coeffs(g, {0, 1, 0, 1, 0, 0}));
     EXPECT_TRUE(same(parse(S, inline_value(r.out, "(III.4.13) d = ", "minpoly(d, X) = ")),
                      A->minpoly(g, X)));
+}
+
+namespace {
+/// <p, q> with the thesis's bits: popcount of p & q (independent of the bit order).
+int hadamard_sign(std::size_t p, std::size_t q) { return std::popcount(p & q) % 2 ? -1 : 1; }
+}  // namespace
+
+TEST(ExamplesWalsh, PrintedResultsByValue) {
+    const run_result& r = run_script("walsh.symrep");
+    ASSERT_EQ(r.status, 0) << r.err;
+    symbols S;
+    auto A = walsh_table(2, false, S);
+    auto As = walsh_table(2, true, S);
+    const auto B = basis_symbols(S, {"u0", "u1", "i0"});
+    auto elem = [&](const std::string& text) { return A->coords_of(parse(S, text), B); };
+    auto elem_s = [&](const std::string& text) { return As->coords_of(parse(S, text), B); };
+    const GiNaC::realsymbol& X = S.sym("X");
+    S("t");
+    const coeffs f{S("f0"), S("f1"), S("f2"), S("f3")};
+
+    // (III.3.7) the idempotents, against (III.3.22) e_p = 2^-n sum_q (-1)^<p,q> w_q
+    const auto e = split_list(after_heading(r.out, "(III.3.7) e_0 .. e_3 ="));
+    ASSERT_EQ(e.size(), 4u);
+    for (std::size_t p = 0; p < 4; ++p) {
+        coeffs expect(4);
+        for (std::size_t q = 0; q < 4; ++q) expect[q] = numeric(hadamard_sign(p, q), 4);
+        const coeffs ep = elem(e[p]);
+        EXPECT_TRUE(same_coeffs(ep, expect)) << p;
+        EXPECT_TRUE(same_coeffs(A->multiply(ep, ep), ep)) << p;
+    }
+
+    // (III.3.25) components a_p = sum_q (-1)^<p,q> f_q
+    const auto a = parse_list(S, after_heading(r.out, "(III.3.25) components a_p ="));
+    ASSERT_EQ(a.size(), 4u);
+    for (std::size_t p = 0; p < 4; ++p) {
+        ex ap = 0;
+        for (std::size_t q = 0; q < 4; ++q) ap += hadamard_sign(p, q) * f[q];
+        EXPECT_TRUE(same(a[p], ap)) << p;
+    }
+
+    // canonical matrix, det (III.3.28), charpoly (III.3.34) by the general methods
+    const auto M = parse_matrix(S, after_heading(r.out, "[f] ="));
+    const GiNaC::matrix Mf = A->canonical_matrix(f);
+    ASSERT_EQ(M.size(), 4u);
+    for (unsigned i = 0; i < 4; ++i)
+        for (unsigned k = 0; k < 4; ++k) EXPECT_TRUE(same(M[i][k], Mf(i, k)));
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.3.28) det [f] =")), A->determinant(f)));
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.3.34) charpoly(f, X) =")), A->charpoly(f, X)));
+
+    // (III.3.44) exp(f t) against the Taylor series at rational values
+    const ex E = parse(S, after_heading(r.out, "(III.3.44) exp(f t) ="));
+    const GiNaC::exmap at{{S("f0"), numeric(1, 3)}, {S("f1"), numeric(-2, 5)}, {S("f2"), numeric(3, 4)},
+                          {S("f3"), numeric(5, 4)}, {S("t"), numeric(-9, 10)}};
+    EXPECT_TRUE(near_coeffs(subs_all(A->coords_of(E, B), at),
+                            exp_series(*A, algebra::scale(numeric(-9, 10), subs_all(f, at)))));
+
+    // inverse and minimal polynomial of g
+    const coeffs g = elem(inline_value(r.out, "g = "));
+    EXPECT_TRUE(same_coeffs(g, {3, 1, 1, 0}));
+    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "inverse(g) =")), A->inverse(g)));
+    const ex mg = parse(S, after_heading(r.out, "minpoly(g, X) ="));
+    EXPECT_TRUE(same(mg, A->minpoly(g, X)));
+    EXPECT_EQ(GiNaC::expand(mg).degree(X), 3);
+
+    // zero divisor z: the printed ranks are the p with z e_p = 0
+    const coeffs z = elem(inline_value(r.out, "z = "));
+    const auto ranks = parse_list(S, inline_value(r.out, "z = ", "zero-divisor ranks: "));
+    std::vector<ex> expect_ranks;
+    for (std::size_t p = 0; p < 4; ++p) {
+        ex ap = 0;
+        for (std::size_t q = 0; q < 4; ++q) ap += hadamard_sign(p, q) * z[q];
+        if (same(ap, 0)) expect_ranks.push_back(numeric(long(p)));
+    }
+    ASSERT_EQ(ranks.size(), expect_ranks.size());
+    for (std::size_t k = 0; k < ranks.size(); ++k) EXPECT_TRUE(same(ranks[k], expect_ranks[k]));
+
+    // (III.3.40) log(h) in W: exp of the printed logarithm gives back h
+    const coeffs h = elem(inline_value(r.out, "h = "));
+    EXPECT_TRUE(same_coeffs(h, {4, 1, 1, 0}));
+    EXPECT_TRUE(near_coeffs(exp_series(*A, elem(after_heading(r.out, "(III.3.40) log(h) ="))), h));
+
+    // W*: the components of y (III.3.62-63), its inverse, and the logarithms (III.3.67)
+    const coeffs y = elem_s(inline_value(r.out, "y = "));
+    EXPECT_TRUE(same_coeffs(y, {1, 2, 0, 0, 3, 0, 0, 1}));
+    const auto cy = parse_list(S, inline_value(r.out, "y = ", "(III.3.61) components: "));
+    ASSERT_EQ(cy.size(), 4u);
+    for (std::size_t p = 0; p < 4; ++p) {
+        ex c = 0;
+        for (std::size_t q = 0; q < 4; ++q) c += hadamard_sign(p, q) * (y[q] + GiNaC::I * y[4 + q]);
+        EXPECT_TRUE(same(cy[p], c)) << p;
+    }
+    EXPECT_TRUE(same_coeffs(elem_s(inline_value(r.out, "inverse(y) = ")), As->inverse(y)));
+    const coeffs ks{1, 2, 0, 0, 0, 0, 0, 0};
+    EXPECT_TRUE(near_coeffs(exp_series(*As, elem_s(after_heading(r.out, "(III.3.67) log(1 + 2*u1) in W* ="))), ks));
+    EXPECT_TRUE(near_coeffs(exp_series(*As, elem_s(after_heading(r.out, "(III.3.67) log(y) ="))), y));
+
+    // (III.4.15-18) the generating element: minimal polynomial by the general method
+    const coeffs d = elem(inline_value(r.out, "(III.4.15) d = "));
+    EXPECT_TRUE(same_coeffs(d, {0, 2, 1, 0}));
+    const ex md = parse(S, inline_value(r.out, "(III.4.15) d = ", "minpoly(d, X) = "));
+    EXPECT_TRUE(same(md, A->minpoly(d, X)));
+    EXPECT_TRUE(same(md, A->charpoly(d, X)));
+}
+
+namespace {
+/// The components a_p + I b_p of w in (x)C^(n+1), from the definition w e_p = (a_p + i0 b_p) e_p
+/// with e_p built by (III.1.15) in the table algebra: a_p and b_p are 2^n times the
+/// coordinates of w e_p at 1 and at i0 (e_p has 2^-n at 1 and 0 at i0; i0 e_p the reverse).
+ex multicomplex_idempotent_poly(unsigned n, std::size_t p, symbols& S) {
+    ex e = 1;
+    for (unsigned k = 1; k <= n; ++k) {
+        const int bit = (p >> (n - k)) & 1;
+        e *= 1 - (bit ? -1 : 1) * S("i0") * S("i" + std::to_string(k));
+    }
+    return e / GiNaC::pow(2, n);
+}
+}  // namespace
+
+TEST(ExamplesMulticomplex, PrintedResultsByValue) {
+    const run_result& r = run_script("multicomplex.symrep");
+    ASSERT_EQ(r.status, 0) << r.err;
+    symbols S;
+    auto A1 = multicomplex_table(1, S);
+    auto A2 = multicomplex_table(2, S);
+    const auto B = basis_symbols(S, {"i0", "i1", "i2"});
+    auto elem1 = [&](const std::string& text) { return A1->coords_of(parse(S, text), B); };
+    auto elem2 = [&](const std::string& text) { return A2->coords_of(parse(S, text), B); };
+    const GiNaC::realsymbol& X = S.sym("X");
+    S("t");
+    // an element given as a polynomial in i0, i1, i2, multiplied out in the table algebra
+    auto from_poly = [&](const table_algebra& A, const ex& poly) {
+        // poly is a sum of products of the i_k: evaluate it by the table's product
+        std::function<coeffs(const ex&)> ev = [&](const ex& x) -> coeffs {
+            if (GiNaC::is_a<GiNaC::add>(x)) {
+                coeffs s = A.zero();
+                for (const auto& op : x) s = algebra::add(s, ev(op));
+                return s;
+            }
+            if (GiNaC::is_a<GiNaC::mul>(x)) {
+                coeffs m = A.unit();
+                for (const auto& op : x) m = A.multiply(m, ev(op));
+                return m;
+            }
+            if (GiNaC::is_a<GiNaC::power>(x)) {
+                coeffs m = A.unit();
+                const coeffs b = ev(x.op(0));
+                for (long k = 0; k < ex_to<numeric>(x.op(1)).to_long(); ++k) m = A.multiply(m, b);
+                return m;
+            }
+            for (std::size_t k = 0; k < A.dim(); ++k)
+                if (A.monomial(k).is_equal(x)) return algebra::scale(1, A.basis_vector(k));
+            return algebra::scale(x, A.unit());  // a scalar
+        };
+        return ev(GiNaC::expand(poly));
+    };
+    auto components = [&](const table_algebra& A, unsigned n, const coeffs& w) {
+        std::vector<ex> c;
+        const std::size_t i0 = std::size_t(1) << n;  // i0 = e_(2^n)
+        for (std::size_t p = 0; p < (std::size_t(1) << n); ++p) {
+            const coeffs we = A.multiply(w, from_poly(A, multicomplex_idempotent_poly(n, p, S)));
+            c.push_back(GiNaC::pow(2, n) * (we[0] + GiNaC::I * we[i0]));
+        }
+        return c;
+    };
+
+    // (III.1.15) the idempotents of multicomplex(2), against the product formula
+    const auto e = split_list(after_heading(r.out, "(III.1.15) e_0 .. e_3 in multicomplex(2) ="));
+    ASSERT_EQ(e.size(), 4u);
+    for (std::size_t p = 0; p < 4; ++p)
+        EXPECT_TRUE(same_coeffs(elem2(e[p]), from_poly(*A2, multicomplex_idempotent_poly(2, p, S)))) << p;
+
+    // (III.1.39) the components of w, from w e_p = (a_p + i0 b_p) e_p
+    const coeffs w{S("x0"), S("x1"), S("x2"), S("x3")};
+    EXPECT_TRUE(same_coeffs(elem1(inline_value(r.out, "w = ")), w));
+    const auto c = parse_list(S, after_heading(r.out, "(III.1.39) components a_p + I*b_p ="));
+    const auto cw = components(*A1, 1, w);
+    ASSERT_EQ(c.size(), 2u);
+    for (std::size_t p = 0; p < 2; ++p) EXPECT_TRUE(same(c[p], cw[p])) << p;
+
+    // (III.1.59) charpoly by the general method
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.1.59) charpoly(w, X) =")), A1->charpoly(w, X)));
+
+    // corrected minimal polynomials (III.1.59-60), by the Krylov method of the table algebra
+    const coeffs one_i0 = from_poly(*A1, 1 + S("i0"));
+    const ex m1 = parse(S, inline_value(r.out, "(III.1.59 corrected) minpoly(1 + i0, X) = "));
+    EXPECT_TRUE(same(m1, A1->minpoly(one_i0, X)));
+    EXPECT_TRUE(same(m1, X * X - 2 * X + 2));
+    const coeffs z = from_poly(*A1, 1 + S("i0") * S("i1"));
+    const ex mz = parse(S, inline_value(r.out, "(III.1.60 corrected) minpoly(z, X) = "));
+    EXPECT_TRUE(same(mz, A1->minpoly(z, X)));
+    EXPECT_TRUE(same(mz.subs(X == 0), 0));  // the extra factor X
+    const coeffs zz = elem2(inline_value(r.out, "zz = "));
+    const auto czz = components(*A2, 2, zz);
+    EXPECT_TRUE(same(czz[0], 0) && same(czz[1], 1 + GiNaC::I) && same(czz[2], 2) && same(czz[3], 3 * GiNaC::I));
+    const ex mzz = parse(S, after_heading(r.out, "minpoly(zz, X) ="));
+    EXPECT_TRUE(same(mzz, A2->minpoly(zz, X)));
+    EXPECT_EQ(GiNaC::expand(mzz).degree(X), 6);
+
+    // (III.1.57) inverse of y, and y's components
+    const coeffs y = elem2(inline_value(r.out, "y = "));
+    const auto cy = components(*A2, 2, y);
+    const auto cyp = parse_list(S, inline_value(r.out, "y = ", "components: "));
+    ASSERT_EQ(cyp.size(), 4u);
+    for (std::size_t p = 0; p < 4; ++p) EXPECT_TRUE(same(cyp[p], cy[p])) << p;
+    EXPECT_TRUE(same_coeffs(elem2(after_heading(r.out, "(III.1.57) inverse(y) =")), A2->inverse(y)));
+
+    // (III.1.52) exp(w t) against the Taylor series at rational values
+    const ex E = parse(S, after_heading(r.out, "(III.1.52) exp(w t) ="));
+    const GiNaC::exmap at{{S("x0"), numeric(1, 3)}, {S("x1"), numeric(-2, 5)}, {S("x2"), numeric(3, 4)},
+                          {S("x3"), numeric(5, 4)}, {S("t"), numeric(6, 5)}};
+    EXPECT_TRUE(near_coeffs(subs_all(A1->coords_of(E, B), at),
+                            exp_series(*A1, algebra::scale(numeric(6, 5), subs_all(w, at)))));
+
+    // (III.1.53) log(y): exp of it gives back y; (III.1.72) rho exp(theta) = y
+    EXPECT_TRUE(near_coeffs(exp_series(*A2, elem2(after_heading(r.out, "(III.1.53) log(y) ="))), y));
+    const auto se = split_list(after_heading(r.out, "(III.1.72) semiexponential(y) = [rho, theta] ="));
+    ASSERT_EQ(se.size(), 2u);
+    EXPECT_TRUE(near_coeffs(A2->multiply(elem2(se[0]), exp_series(*A2, elem2(se[1]))), y));
+
+    // Thm III.1.3.1: the decomposition sums to y and each term has components of one modulus
+    const auto parts = split_list(after_heading(r.out, "(III.1.91) special_type_decomposition(y) ="));
+    ASSERT_GE(parts.size(), 1u);
+    ASSERT_LE(parts.size(), 4u);
+    coeffs sum = A2->zero();
+    for (const auto& part : parts) {
+        const coeffs d = elem2(part);
+        sum = algebra::add(sum, d);
+        const auto cd = components(*A2, 2, d);
+        for (std::size_t p = 1; p < 4; ++p)
+            EXPECT_TRUE(same(GiNaC::abs(cd[p]), GiNaC::abs(cd[0]))) << part;
+        EXPECT_FALSE(same(cd[0], 0)) << part;
+    }
+    EXPECT_TRUE(same_coeffs(sum, y));
+
+    // (III.4.5-9) the generating element's minimal polynomial equals its characteristic one
+    const coeffs g = elem2(inline_value(r.out, "(III.4.5) d = "));
+    const ex mg = parse(S, inline_value(r.out, "(III.4.5) d = ", "minpoly(d, X) = "));
+    EXPECT_TRUE(same(mg, A2->minpoly(g, X)));
+    EXPECT_TRUE(same(mg, A2->charpoly(g, X)));
 }
