@@ -734,3 +734,34 @@ TEST(ExamplesMulticomplex, PrintedResultsByValue) {
     EXPECT_TRUE(same(mg, A2->minpoly(g, X)));
     EXPECT_TRUE(same(mg, A2->charpoly(g, X)));
 }
+
+// The one result walsh.symrep states without running it (an error would make the script
+// exit 1): log in W of an element with a negative root fails, names the root and points to
+// W*, where the same element has a logarithm.
+TEST(ExamplesWalsh, LogWithANegativeRootPointsToWStar) {
+    const std::string err_path = ::testing::TempDir() + "/symrep_examples_" +
+                                 std::to_string(getpid()) + "_neglog_err.txt";
+    const std::string cmd = std::string("'") + SYMREP_BINARY +
+                            "' -e 'log(element(walsh(2), [1, 2, 0, 0]))'"
+                            " -e 'log(element(walsh_complex(2), [1, 2, 0, 0, 0, 0, 0, 0]))'"
+                            " 2>'" + err_path + "' </dev/null";
+    std::string out;
+    FILE* p = popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    char buf[4096];
+    std::size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    const int st = pclose(p);
+    const std::string err = slurp(err_path);
+    std::remove(err_path.c_str());
+    EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 1);
+    EXPECT_NE(err.find("a_1 = -1"), std::string::npos) << err;
+    EXPECT_NE(err.find("walsh_complex(2)"), std::string::npos) << err;
+    // the logarithm in W*, by value: exp of it (Taylor series) is 1 + 2 u1
+    symbols S;
+    auto As = walsh_table(2, true, S);
+    const auto B = basis_symbols(S, {"u0", "u1", "i0"});
+    const auto ls = lines_of(out);
+    ASSERT_EQ(ls.size(), 1u) << out;
+    EXPECT_TRUE(near_coeffs(exp_series(*As, As->coords_of(parse(S, ls[0]), B)), {1, 2, 0, 0, 0, 0, 0, 0}));
+}
