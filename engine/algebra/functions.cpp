@@ -9,6 +9,7 @@
 // complex pair a +- i b; at a complex pair the real conditions are
 // Re, Im of p^{(j)}(a + i b) = f^{(j)}(a + i b). exp(w t) (Thm II.2.3) and log(w)
 // are the two instances.
+#include <map>
 #include <sstream>
 
 #include "algebra/algebra.h"
@@ -63,13 +64,38 @@ int sign_of(const ex& x) {
     return 2;
 }
 
+// Replaces the non-rational atoms of e (functions such as log(2) or exp(t),
+// constants such as Pi, non-integer powers such as sqrt(2)) by temporary
+// symbols, recording symbol -> atom in back, so that e becomes a polynomial
+// over Q(symbols) that factor() understands.
+ex atomize(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back) {
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e)) return e;
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
+        (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())) {
+        GiNaC::exvector ops;
+        for (std::size_t i = 0; i < e.nops(); ++i) ops.push_back(atomize(e.op(i), seen, back));
+        if (GiNaC::is_a<GiNaC::add>(e)) return GiNaC::add(ops);
+        if (GiNaC::is_a<GiNaC::mul>(e)) return GiNaC::mul(ops);
+        return GiNaC::pow(ops[0], ops[1]);
+    }
+    auto it = seen.find(e);
+    if (it != seen.end()) return it->second;
+    const GiNaC::symbol s;
+    seen.emplace(e, s);
+    back[s] = e;
+    return s;
+}
+
 // The roots of q (monic in X) with multiplicities, from its factorization over Q.
 std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::string& where) {
     // Non-polynomial atoms of the coefficients (log(2), Pi, sqrt(2), exp(t) ...)
     // become temporary symbols so that factor() can work over Q(symbols).
     GiNaC::exmap repl;
-    const ex qp = GiNaC::expand(q).to_polynomial(repl);
-    ex fq = GiNaC::factor(qp);
+    std::map<ex, ex, GiNaC::ex_is_less> seen;
+    const ex qp = atomize(GiNaC::expand(q), seen, repl);
+    // factor() works over Z: clear the denominators first
+    ex fq = GiNaC::factor(GiNaC::expand(GiNaC::numer(GiNaC::normal(qp))));
     std::vector<std::pair<ex, unsigned>> factors;
     auto take = [&](const ex& f) {
         if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
