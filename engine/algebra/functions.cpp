@@ -110,9 +110,14 @@ std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::strin
         take(fq);
     std::vector<root> roots;
     for (auto& [f0, m] : factors) {
-        const ex f = GiNaC::expand(f0.subs(repl));
-        if (!f.has(X)) continue;  // constant content
-        const int d = f.degree(X);
+        const ex fr = GiNaC::expand(f0.subs(repl));
+        if (!fr.has(X)) continue;  // constant content
+        const int d = fr.degree(X);
+        // monic, so that the imaginary part b = sqrt(-disc)/2 of a pair is positive
+        // and the closed forms do not depend on the sign factor() chose
+        ex f = 0;
+        const ex lc = fr.coeff(X, d);
+        for (int k = 0; k <= d; ++k) f += tidy(fr.coeff(X, k) / lc) * GiNaC::pow(X, k);
         if (d == 1) {
             roots.push_back({tidy(-f.coeff(X, 0) / f.coeff(X, 1)), ex(0), m, f});
         } else if (d == 2) {
