@@ -165,3 +165,15 @@ TEST(TheoremIII41, NonPolynomialAlgebras) {
     EXPECT_EQ(s.status, generator_search::verdict::unknown);
     EXPECT_NE(s.reason.find("after 5 candidates"), std::string::npos) << s.reason;
 }
+
+TEST(PolynomialAlgebra, NamesWithSymbolicCoefficients) {
+    const GiNaC::symbol X("X");
+    const GiNaC::realsymbol a("a");
+    EXPECT_EQ(polynomial_algebra::make(X * X - 2 * a * X + 1, X)->name(), "polynomial(X^2 - 2*a*X + 1)");
+    EXPECT_EQ(polynomial_algebra::make(X - 3, X)->name(), "polynomial(X - 3)");
+    // symbolic coefficient: P_2 with v^2 = -a^2 has exp(v t) solving f'' + a^2 f = 0
+    auto P = polynomial_algebra::make(X * X + a * a, X);
+    const GiNaC::symbol t("t");
+    const coeffs E = P->exp(P->generator(), t);
+    for (const auto& f : E) EXPECT_TRUE(is_zero_scalar(f.diff(t, 2) + a * a * f)) << f;
+}

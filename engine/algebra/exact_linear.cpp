@@ -1,6 +1,9 @@
 // symrep/algebra/exact_linear.cpp -- incremental exact Gaussian elimination.
 #include "algebra/exact_linear.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "algebra/scalar.h"
 
 namespace symrep {
@@ -8,6 +11,9 @@ namespace symrep {
 using GiNaC::ex;
 
 std::optional<std::vector<ex>> krylov_basis::add(const coeffs& v_in) {
+    if (v_in.size() != length_)
+        throw std::logic_error("krylov_basis: vector of length " + std::to_string(v_in.size()) +
+                               ", expected " + std::to_string(length_));
     const std::size_t m = rows_.size();
     coeffs v(v_in.size());
     for (std::size_t k = 0; k < v.size(); ++k) v[k] = tidy(v_in[k]);

@@ -35,12 +35,15 @@ polynomial_algebra::polynomial_algebra(const ex& p, const GiNaC::symbol& X) : X_
     for (std::size_t k = 0; k < n_; ++k) low_[k] = tidy(q.coeff(X, int(k)));
     // name: descending powers, each coefficient printed by GiNaC
     std::ostringstream os;
-    os << "polynomial(" << X << "^" << n;
+    os << "polynomial(" << X;
+    if (n > 1) os << "^" << n;
     for (int k = n - 1; k >= 0; --k) {
         const ex c = low_[k];
         if (c.is_zero()) continue;
         std::string cs = str(c);
-        const bool neg = GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_negative();
+        // negative number, or a product with a negative numeric factor (-2*a)
+        const ex num = GiNaC::is_a<GiNaC::mul>(c) ? c.op(c.nops() - 1) : c;
+        const bool neg = GiNaC::is_a<GiNaC::numeric>(num) && GiNaC::ex_to<GiNaC::numeric>(num).is_negative();
         if (neg) cs = str(-c);
         os << (neg ? " - " : " + ");
         const bool atomic = !GiNaC::is_a<GiNaC::add>(c);

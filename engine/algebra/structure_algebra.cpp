@@ -161,7 +161,9 @@ coeffs structure_algebra::multiply(const coeffs& a, const coeffs& b) const {
 }
 
 coeffs structure_algebra::basis_product(std::size_t i, std::size_t j) const {
-    if (i >= n_ || j >= n_) basis_vector(i >= n_ ? i : j);  // throws with a clear message
+    if (i >= n_ || j >= n_)
+        throw algebra_error(name_ + " has basis elements 0.." + std::to_string(n_ - 1) +
+                            "; there is no product e" + std::to_string(i) + "*e" + std::to_string(j));
     return gamma_[i][j];
 }
 
