@@ -170,9 +170,8 @@ void register_polynomial_builtins(registry& r) {
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
                const element& d = arg_element(args, 0, b);
                const GiNaC::symbol t = arg_symbol(args, 1, b);
-               list out;
-               for (const auto& f : fundamental_system(d.parent(), d.coefficients(), t)) out.push_back(f);
-               return out;
+               const std::vector<GiNaC::ex> f = fundamental_system(d.parent(), d.coefficients(), t);
+               return list(f.begin(), f.end());
            });
 }
 
