@@ -216,6 +216,20 @@ TEST(Log, ExpOfLogIsIdentity) {
     EXPECT_TRUE(same(complex_numbers()->log({0, 1}), coeffs{0, GiNaC::Pi / 2}));
 }
 
+TEST(Log, RepeatedComplexRoots) {
+    // w = 2 + v in R[X]/((X^2 + 1)^2): roots 2 +- i, each of multiplicity 2 (uses log', Re/Im)
+    const GiNaC::symbol X("X");
+    auto P = polynomial_algebra::make(GiNaC::expand(GiNaC::pow(X * X + 1, 2)), X);
+    const coeffs w{2, 1, 0, 0};
+    const coeffs L = P->log(w);
+    EXPECT_TRUE(same(L, coeffs{GiNaC::log(ex(5)) / 2 - ex(1) / 10, 3 * GiNaC::atan(ex(1) / 2) / 2 - ex(1) / 5,
+                               ex(-1) / 10, GiNaC::atan(ex(1) / 2) / 2 - ex(1) / 5}));
+    EXPECT_TRUE(close(P->exp(L, 1), w));
+    // v (v^2 + 1) has the root 0: a zero divisor
+    auto Q = polynomial_algebra::make(GiNaC::pow(X, 3) + X, X);
+    EXPECT_THROW(Q->log(Q->generator()), zero_divisor_error);
+}
+
 TEST(Log, Errors) {
     const std::string z = what_of([] { dual_numbers()->log({0, 1}); });
     EXPECT_NE(z.find("zero divisor"), std::string::npos) << z;
