@@ -9,6 +9,12 @@
 // complex pair a +- i b; at a complex pair the real conditions are
 // Re, Im of p^{(j)}(a + i b) = f^{(j)}(a + i b). exp(w t) (Thm II.2.3) and log(w)
 // are the two instances.
+//
+// Closed forms are refused (closed_form_error) for an irreducible factor of
+// degree > 2 and for a quadratic factor whose discriminant has no decidable
+// sign. Symbolic coefficients are read generically: a discriminant such as
+// -4 a^2 (a a real symbol) is taken as negative, a pivot such as a - 1 as
+// non-zero; the result then holds for the generic values of the symbols.
 #include <map>
 #include <sstream>
 
