@@ -160,8 +160,8 @@ TEST(TheoremIII41, NonPolynomialAlgebras) {
     auto A = square_zero_plane();
     const std::string m = what_of([&] { change_of_basis_to_power_basis(*A, {0, 1, 1}); });
     EXPECT_NE(m.find("does not generate"), std::string::npos) << m;
-    // a search without the generic test stays honest
-    const generator_search s = find_generator(*A, 5, 0);
+    // a search without the structural test stays honest
+    const generator_search s = find_generator(*A, 5, false);
     EXPECT_EQ(s.status, generator_search::verdict::unknown);
     EXPECT_NE(s.reason.find("after 5 candidates"), std::string::npos) << s.reason;
 }
@@ -176,4 +176,54 @@ TEST(PolynomialAlgebra, NamesWithSymbolicCoefficients) {
     const GiNaC::symbol t("t");
     const coeffs E = P->exp(P->generator(), t);
     for (const auto& f : E) EXPECT_TRUE(is_zero_scalar(f.diff(t, 2) + a * a * f)) << f;
+}
+
+TEST(TheoremIII41, Nilradical) {
+    EXPECT_TRUE(nilradical(*c_r_r()).empty());       // semisimple: C x R x R
+    EXPECT_TRUE(nilradical(*complex_numbers()).empty());
+    const std::vector<coeffs> N = nilradical(*truncated_cubic());  // span(x, x^2)
+    ASSERT_EQ(N.size(), 2u);
+    for (const auto& v : N) EXPECT_TRUE(is_zero_scalar(v[0]));
+    EXPECT_EQ(nilradical(*dual_square()).size(), 3u);  // span(x, y, xy)
+}
+
+// With no candidates at all, the structural test decides and the box search finds a generator.
+TEST(TheoremIII41, StructuralTestThenBoxSearch) {
+    auto A = c_r_r();
+    const generator_search s = find_generator(*A, 0);
+    ASSERT_EQ(s.status, generator_search::verdict::polynomial) << s.reason;
+    EXPECT_TRUE(is_generator(*A, s.generator));
+    EXPECT_NE(s.reason.find("box search"), std::string::npos) << s.reason;
+}
+
+// C x R[x,y]/(x,y)^2 x R in a dense basis: no basis element is special, and the
+// structural test still proves that the algebra is not polynomial.
+TEST(TheoremIII41, DenseNonPolynomial) {
+    const int n = 6;
+    table g = zero_table(n);
+    auto e = [&](int k, int s = 1) { coeffs c(n, ex(0)); c[k] = s; return c; };
+    set(g, 0, 0, e(0)); set(g, 0, 1, e(1)); set(g, 1, 1, e(0, -1));
+    set(g, 2, 2, e(2)); set(g, 2, 3, e(3)); set(g, 2, 4, e(4)); set(g, 5, 5, e(5));
+    auto S = structure_algebra::make(g);
+    GiNaC::matrix M(n, n);  // new basis b_k = sum_l M(k, l) s_l
+    for (int k = 0; k < n; ++k)
+        for (int l = 0; l < n; ++l) M(k, l) = (k == l) ? 1 : ((k * 3 + l * 5) % 4) - 1;
+    const GiNaC::matrix Mi = M.inverse();
+    table h = zero_table(n);
+    for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) {
+            coeffs va(n), vb(n);
+            for (int l = 0; l < n; ++l) { va[l] = M(a, l); vb[l] = M(b, l); }
+            const coeffs p = S->multiply(va, vb);
+            for (int k = 0; k < n; ++k) {
+                ex s = 0;
+                for (int l = 0; l < n; ++l) s += p[l] * Mi(l, k);
+                h[a][b][k] = GiNaC::normal(s);
+            }
+        }
+    auto A = structure_algebra::make(h);
+    const generator_search s = find_generator(*A);
+    EXPECT_EQ(s.status, generator_search::verdict::not_polynomial) << s.reason;
+    EXPECT_NE(s.reason.find("N/N^2 is not a cyclic"), std::string::npos) << s.reason;
+    EXPECT_EQ(nilradical(*A).size(), 2u);
 }

@@ -67,4 +67,38 @@ std::optional<std::vector<ex>> solve_linear(std::vector<std::vector<ex>> A, std:
     return x;
 }
 
+std::vector<coeffs> null_space(std::vector<std::vector<ex>> A) {
+    const std::size_t rows = A.size();
+    if (rows == 0) return {};
+    const std::size_t cols = A[0].size();
+    std::vector<std::size_t> pivots;  // pivot column of row r
+    std::size_t r = 0;
+    for (std::size_t c = 0; c < cols && r < rows; ++c) {
+        std::size_t p = r;
+        while (p < rows && is_zero_scalar(A[p][c])) ++p;
+        if (p == rows) continue;
+        std::swap(A[p], A[r]);
+        const ex piv = tidy(A[r][c]);
+        for (std::size_t k = c; k < cols; ++k) A[r][k] = tidy(A[r][k] / piv);
+        for (std::size_t i = 0; i < rows; ++i) {
+            if (i == r || is_zero_scalar(A[i][c])) continue;
+            const ex f = A[i][c];
+            for (std::size_t k = c; k < cols; ++k) A[i][k] = tidy(A[i][k] - f * A[r][k]);
+        }
+        pivots.push_back(c);
+        ++r;
+    }
+    std::vector<coeffs> basis;
+    std::vector<bool> is_pivot(cols, false);
+    for (std::size_t c : pivots) is_pivot[c] = true;
+    for (std::size_t f = 0; f < cols; ++f) {
+        if (is_pivot[f]) continue;
+        coeffs x(cols, ex(0));
+        x[f] = 1;
+        for (std::size_t i = 0; i < pivots.size(); ++i) x[pivots[i]] = tidy(-A[i][f]);
+        basis.push_back(std::move(x));
+    }
+    return basis;
+}
+
 }  // namespace symrep

@@ -52,4 +52,8 @@ private:
 std::optional<std::vector<GiNaC::ex>> solve_linear(std::vector<std::vector<GiNaC::ex>> A,
                                                    std::vector<GiNaC::ex> b);
 
+/// A basis of the null space {x : A x = 0} of A (rows x cols), exact
+/// (reduced row echelon form; free variables set to 1 in turn).
+std::vector<coeffs> null_space(std::vector<std::vector<GiNaC::ex>> A);
+
 }  // namespace symrep

@@ -7,13 +7,18 @@
 //   1. the basis elements eps_k, then the integer combinations
 //      sum_k c_k eps_k with c_k = s^k, s = 2, -2, 3, -3, ... (a fixed
 //      Vandermonde sequence), up to max_candidates in all;
-//   2. if none works and dim <= generic_limit, the generic element
-//      d = sum_k x_k eps_k with symbols x_k: the powers 1, d, ..., d^{n-1} are
-//      independent for some real x iff they are independent identically in x.
-//      If they are dependent, NO element generates A_n and the algebra is proved
-//      non-polynomial (e.g. R[x,y]/(x,y)^2). If they are independent, integer
-//      points of a growing box are tried until one works.
+//   2. if none works (and `decide`), an exact structural test. The nilradical
+//      N is the radical of the trace form Tr([eps_i eps_j]) (characteristic 0),
+//      A/N = R^r x C^c, and A = prod of local factors (A_i, m_i) with residue
+//      field k_i in {R, C}. A is polynomial iff every m_i/m_i^2 has
+//      k_i-dimension <= 1, i.e. iff N/N^2 is a cyclic A/N-module: a u in N with
+//      A u + N^2 = N. This is decided with u = sum_l y_l n_l for symbols y_l
+//      (the rank is maximal for generic y). If N/N^2 is not cyclic, NO element
+//      generates A and the algebra is proved non-polynomial (e.g.
+//      R[x,y]/(x,y)^2, where N/N^2 = span(x, y) over A/N = R). If it is
+//      cyclic, integer points of a growing box are tried until one generates.
 // Otherwise the verdict is "unknown" with the number of candidates tried.
+// With symbolic structure constants every test holds for generic values.
 #pragma once
 
 #include <cstddef>
@@ -33,7 +38,11 @@ struct generator_search {
 
 /// Thm III.4.1: searches for an element whose minimal polynomial has degree n = dim A.
 generator_search find_generator(const algebra& A, std::size_t max_candidates = 64,
-                                std::size_t generic_limit = 6);
+                                bool decide = true);
+
+/// The nilradical N of A (II.1: the nilpotent elements), as a basis of
+/// coordinate vectors: the radical of the trace form (a, b) -> Tr [a b].
+std::vector<coeffs> nilradical(const algebra& A);
 
 /// True iff A is polynomial; throws closed_form_error when the search of
 /// find_generator can decide neither way.

@@ -117,7 +117,7 @@ void register_polynomial_builtins(registry& r) {
     add(r, {"find_generator", "find_generator(A)",
            "An element d of A whose minimal polynomial has degree n = dim A, so that 1, d, ..., d^(n-1) "
            "is a basis and A is polynomial. Searches the basis elements, then fixed integer "
-           "combinations, then decides with the generic element; an error explains when A is not "
+           "combinations, then decides exactly (N/N^2 cyclic over A/N, N the nilradical); an error explains when A is not "
            "polynomial or the search could not decide.",
            "Thm III.4.1", "find_generator(polynomial_algebra(X^2 + 1, X))", section, 1, 1, {}},
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
@@ -131,7 +131,7 @@ void register_polynomial_builtins(registry& r) {
 
     add(r, {"is_polynomial", "is_polynomial(A)",
            "True iff A is a polynomial algebra, i.e. some element has a minimal polynomial of degree "
-           "dim A; decided exactly (generic-element test) up to dimension 6.",
+           "dim A; decided exactly: the nilradical N must have N/N^2 cyclic over A/N.",
            "Thm III.4.1", "is_polynomial(algebra_from_table([[[1,0],[0,1]],[[0,1],[0,0]]]))", section,
            1, 1, {}},
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
