@@ -60,8 +60,7 @@ bool search_box(const algebra& A, std::size_t budget, generator_search& out) {
 }  // namespace
 
 // Thm III.4.1: an element with minimal polynomial of degree n makes A_n polynomial.
-generator_search find_generator(const algebra& A, std::size_t max_candidates,
-                                bool decide) {
+generator_search find_generator(const algebra& A, std::size_t max_candidates, bool decide) {
     const std::size_t n = A.dim();
     generator_search out;
     auto found = [&](coeffs d, const std::string& how) {
@@ -71,13 +70,13 @@ generator_search find_generator(const algebra& A, std::size_t max_candidates,
                      " = dim, so " + A.name() + " is polynomial (Thm III.4.1)";
         return out;
     };
-    // 1. basis elements
+    // 1a. basis elements
     for (std::size_t k = 0; k < n && out.candidates < max_candidates; ++k) {
         ++out.candidates;
         coeffs d = A.basis_vector(k);
         if (is_generator(A, d)) return found(d, "basis element " + A.basis_name(k));
     }
-    // 2. Vandermonde combinations sum_k s^k eps_k, s = 2, -2, 3, -3, ...
+    // 1b. Vandermonde combinations sum_k s^k eps_k, s = 2, -2, 3, -3, ...
     for (long m = 0; out.candidates < max_candidates; ++m) {
         const long s = (m % 2 ? -1 : 1) * (2 + m / 2);
         coeffs d(n);
@@ -87,7 +86,7 @@ generator_search find_generator(const algebra& A, std::size_t max_candidates,
         if (is_generator(A, d)) return found(d, "element sum_k (" + std::to_string(s) + ")^k eps_k");
     }
     if (decide) {
-        // 2. N/N^2 cyclic over A/N?
+        // 2. exact decision: is N/N^2 a cyclic A/N-module (N the nilradical)?
         const std::vector<coeffs> N = nilradical(A);
         krylov_basis K(n);
         for (const coeffs& a : N)
