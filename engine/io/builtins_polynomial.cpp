@@ -67,7 +67,7 @@ element element_of(const algebra_ptr& A, coeffs c) { return element(A, std::move
 void register_polynomial_builtins(registry& r) {
     add(r, {"algebra_from_table", "algebra_from_table(gamma [, names [, name]])",
            "The commutative, associative, unital algebra with structure constants gamma: gamma[i][j] "
-           "is the list of coordinates of e_i*e_j. The table is checked (a non-commutative pair, a "
+           "(indices from 0) is the list of coordinates of e_i*e_j. The table is checked (a non-commutative pair, a "
            "non-associative triple or a missing unit is named); the unit is found by solving a linear "
            "system and need not be e_0. Optional basis names (list of strings) and algebra name.",
            "(II.1.2)", "algebra_from_table([[[1,0],[0,1]],[[0,1],[-1,0]]], [\"1\", \"i\"])", section,
@@ -117,8 +117,8 @@ void register_polynomial_builtins(registry& r) {
     add(r, {"find_generator", "find_generator(A)",
            "An element d of A whose minimal polynomial has degree n = dim A, so that 1, d, ..., d^(n-1) "
            "is a basis and A is polynomial. Searches the basis elements, then fixed integer "
-           "combinations, then decides exactly (N/N^2 cyclic over A/N, N the nilradical); an error explains when A is not "
-           "polynomial or the search could not decide.",
+           "combinations, then decides exactly (N/N^2 cyclic over A/N, N the nilradical); an error "
+           "explains when A is not polynomial or no integer generator was found.",
            "Thm III.4.1", "find_generator(polynomial_algebra(X^2 + 1, X))", section, 1, 1, {}},
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
                const algebra_ptr& A = arg_algebra(args, 0, b);
