@@ -36,11 +36,7 @@ struct root {
     ex factor;         // the irreducible factor of q it comes from (for messages)
 };
 
-std::string str(const ex& e) {
-    std::ostringstream os;
-    os << e;
-    return os.str();
-}
+std::string str(const ex& e) { return message_text(e); }
 
 bool has_free_symbols(const ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)

@@ -94,7 +94,7 @@ void register_polynomial_builtins(registry& r) {
            "(II.1 completion of Thm II.1.2)", "polynomial_algebra(X^3 - 2*X + 1, X)", section, 2, 2, {}},
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
                const GiNaC::ex& p = arg_ex(args, 0, b);
-               const GiNaC::symbol X = arg_symbol(args, 1, b);
+               const GiNaC::symbol& X = arg_symbol(args, 1, b);
                return algebra_ptr(polynomial_algebra::make(p, X));
            });
 
@@ -169,7 +169,7 @@ void register_polynomial_builtins(registry& r) {
            section, 2, 2, {}},
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
                const element& d = arg_element(args, 0, b);
-               const GiNaC::symbol t = arg_symbol(args, 1, b);
+               const GiNaC::symbol& t = arg_symbol(args, 1, b);
                const std::vector<GiNaC::ex> f = fundamental_system(d.parent(), d.coefficients(), t);
                return list(f.begin(), f.end());
            });
