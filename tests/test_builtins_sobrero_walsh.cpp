@@ -2,6 +2,8 @@
 // fn with a small mock context.
 #include <gtest/gtest.h>
 
+#include "mock_context.h"
+
 #include <map>
 #include <sstream>
 
@@ -16,19 +18,7 @@ using GiNaC::ex;
 
 namespace {
 
-class mock_context : public context {
-public:
-    GiNaC::ex symbol(const std::string& name) override {
-        auto it = syms_.find(name);
-        if (it == syms_.end()) it = syms_.emplace(name, GiNaC::realsymbol(name)).first;
-        return it->second;
-    }
-    std::ostream& out() override { return out_; }
-
-private:
-    std::map<std::string, GiNaC::ex> syms_;
-    std::ostringstream out_;
-};
+using symrep::test::mock_context;
 
 struct BuiltinsSW : ::testing::Test {
     registry r;

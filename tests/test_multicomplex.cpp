@@ -4,6 +4,8 @@
 // algebra_general.cpp, bad input, and the builtins.
 #include <gtest/gtest.h>
 
+#include "mock_context.h"
+
 #include <random>
 #include <sstream>
 
@@ -704,16 +706,7 @@ TEST(Multicomplex, BadInput) {
 
 // --------------------------------------------------------------- builtins
 namespace {
-struct mock_context : lang::context {
-    std::ostringstream os;
-    std::map<std::string, GiNaC::ex> syms;
-    GiNaC::ex symbol(const std::string& name) override {
-        auto it = syms.find(name);
-        if (it == syms.end()) it = syms.emplace(name, GiNaC::realsymbol(name)).first;
-        return it->second;
-    }
-    std::ostream& out() override { return os; }
-};
+using symrep::test::mock_context;
 lang::value call(const lang::registry& r, const std::string& name, std::vector<lang::value> args) {
     static mock_context ctx;
     const lang::builtin* b = r.find(name);

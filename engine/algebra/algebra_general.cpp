@@ -3,6 +3,7 @@
 // characteristic and minimal polynomials, zero-divisor test and inverse.
 #include "algebra/algebra.h"
 
+#include "algebra/exact_linear.h"
 #include "algebra/scalar.h"
 #include "io/error.h"
 
@@ -36,60 +37,41 @@ ex algebra::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
 }
 
 // Cor. II.1.1: the minimal polynomial is the first linear relation among
-// w^0, w^1, w^2, ... (Krylov sequence); its degree is at most n.
+// w^0, w^1, w^2, ... (Krylov sequence); its degree is at most n. Incremental
+// Gaussian elimination: each new power is reduced once against the echelon
+// rows of the lower ones.
 ex algebra::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "minimal polynomial");
     const std::size_t n = dim();
-    std::vector<coeffs> powers{unit()};
-    for (std::size_t k = 1; k <= n; ++k) {
-        powers.push_back(multiply(powers.back(), w));
-        matrix K(n, k);  // columns w^0 .. w^{k-1}
-        for (std::size_t c = 0; c < k; ++c)
-            for (std::size_t r = 0; r < n; ++r) K(r, c) = powers[c][r];
-        matrix rhs(n, 1);
-        for (std::size_t r = 0; r < n; ++r) rhs(r, 0) = powers[k][r];
-        matrix Kb(n, k + 1);
-        for (std::size_t r = 0; r < n; ++r) {
-            for (std::size_t c = 0; c < k; ++c) Kb(r, c) = K(r, c);
-            Kb(r, k) = rhs(r, 0);
+    krylov_basis K(n);
+    coeffs pw = unit();
+    for (std::size_t k = 0; k <= n; ++k) {
+        if (auto rel = K.add(pw)) {  // w^k = sum_{c<k} rel[c] w^c
+            ex p = GiNaC::pow(X, static_cast<int>(k));
+            for (std::size_t c = 0; c < k; ++c) p -= (*rel)[c] * GiNaC::pow(X, static_cast<int>(c));
+            return GiNaC::expand(p);
         }
-        if (Kb.rank() > k) continue;  // w^k independent of the lower powers
-        matrix vars(k, 1);
-        std::vector<GiNaC::symbol> cs;
-        for (std::size_t c = 0; c < k; ++c) {
-            cs.emplace_back("c" + std::to_string(c));
-            vars(c, 0) = cs.back();
-        }
-        const matrix sol = K.solve(vars, rhs);
-        ex p = GiNaC::pow(X, static_cast<int>(k));
-        for (std::size_t c = 0; c < k; ++c) p -= tidy(sol(c, 0)) * GiNaC::pow(X, static_cast<int>(c));
-        return GiNaC::expand(p);
+        pw = multiply(pw, w);
     }
-    return charpoly(w, X);  // unreachable by Cayley-Hamilton, kept for safety
+    return charpoly(w, X);  // unreachable by Cayley-Hamilton (II.1.12)
 }
 
 // (II.1.22) w is a zero divisor iff det [w] = 0.
 bool algebra::is_zero_divisor(const coeffs& w) const { return is_zero_scalar(determinant(w)); }
 
-// w x = 1: coordinates of w x are [w]^T x.
+// w x = 1: the coordinates of w x are [w]^T x (II.1.4), so x solves [w]^T x = e.
 coeffs algebra::inverse(const coeffs& w) const {
     const matrix M = canonical_matrix(w);
-    const ex det = tidy(M.determinant());
-    if (is_zero_scalar(det))
+    const std::size_t n = dim();
+    std::vector<std::vector<ex>> A(n, std::vector<ex>(n));
+    for (std::size_t r = 0; r < n; ++r)
+        for (std::size_t c = 0; c < n; ++c) A[r][c] = M(c, r);
+    auto x = solve_linear(std::move(A), unit());
+    if (!x)
         throw zero_divisor_error("inverse of a zero divisor in " + name() +
                                      ": det [w] = 0, so w v = 0 for some v != 0 (II.1.22)",
                                  {});
-    const std::size_t n = dim();
-    matrix vars(n, 1), rhs(n, 1);
-    const coeffs u = unit();
-    for (std::size_t k = 0; k < n; ++k) {
-        vars(k, 0) = GiNaC::symbol("x" + std::to_string(k));
-        rhs(k, 0) = u[k];
-    }
-    const matrix x = M.transpose().solve(vars, rhs);
-    coeffs r(n);
-    for (std::size_t k = 0; k < n; ++k) r[k] = tidy(x(k, 0));
-    return r;
+    return *x;
 }
 
 }  // namespace symrep

@@ -74,13 +74,16 @@ multicomplex_d::vector multicomplex_d::from_idempotent_components(const componen
 multicomplex_d::vector multicomplex_d::multiply(const vector& a, const vector& b) const {
     check_size(a, "product");
     check_size(b, "product");
-    auto ca = multicomplex_components<double>(a, n_);
-    const auto cb = multicomplex_components<double>(b, n_);
+    // Scratch buffers kept per thread: fresh 2^n-element allocations each call cost
+    // page faults comparable to the transforms themselves.
+    thread_local components ca, cb;
+    multicomplex_components_into<double>(a, n_, ca);
+    multicomplex_components_into<double>(b, n_, cb);
     for (std::size_t p = 0; p < ca.size(); ++p) {
         const double x = ca[p].real(), y = ca[p].imag(), u = cb[p].real(), v = cb[p].imag();
         ca[p] = {x * u - y * v, x * v + y * u};
     }
-    return multicomplex_from_components<double>(std::move(ca), n_);
+    return multicomplex_from_components_inplace<double>(ca, n_);
 }
 
 const std::vector<std::uint32_t>& multicomplex_d::structure_table() const {

@@ -9,6 +9,8 @@
 #pragma once
 
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <ginac/ginac.h>
 
 namespace symrep {
@@ -36,6 +38,18 @@ inline GiNaC::ex tidy(const GiNaC::ex& x) {
     return has_function_call(e) ? e : GiNaC::normal(e);
 }
 inline double tidy(double x) { return x; }
+
+/// An expression as text for an error message, cut to about `max` characters
+/// (a message that quotes a 10 000-character minimal polynomial helps nobody).
+inline std::string message_text(const GiNaC::ex& e, std::size_t max = 160) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    if (s.size() > max)
+        s = s.substr(0, max / 2) + " ... " + s.substr(s.size() - max / 4) + " (" +
+            std::to_string(s.size()) + " characters)";
+    return s;
+}
 
 /// Scalar from an integer, for both paths.
 template <class T> T from_int(long k) { return T(k); }
