@@ -200,10 +200,14 @@ std::vector<std::vector<ex>> parse_matrix(symbols& S, const std::string& text) {
 /// basis_monomial(k) is how basis element k prints, as a monomial in basis symbols.
 class table_algebra : public algebra {
 public:
-    table_algebra(std::string name, std::vector<std::vector<coeffs>> gamma, std::vector<ex> monomials)
-        : name_(std::move(name)), gamma_(std::move(gamma)), mono_(std::move(monomials)) {}
+    /// `unit`: the coordinates of the identity when it is not basis element 0.
+    table_algebra(std::string name, std::vector<std::vector<coeffs>> gamma, std::vector<ex> monomials,
+                  coeffs unit = {})
+        : name_(std::move(name)), gamma_(std::move(gamma)), mono_(std::move(monomials)),
+          unit_(std::move(unit)) {}
     std::string name() const override { return name_; }
     std::size_t dim() const override { return gamma_.size(); }
+    coeffs unit() const override { return unit_.empty() ? algebra::unit() : unit_; }
     coeffs multiply(const coeffs& a, const coeffs& b) const override {
         coeffs r(dim(), ex(0));
         for (std::size_t i = 0; i < dim(); ++i) {
@@ -242,6 +246,7 @@ private:
     std::string name_;
     std::vector<std::vector<coeffs>> gamma_;
     std::vector<ex> mono_;
+    coeffs unit_;
 };
 
 using table_ptr = std::shared_ptr<const table_algebra>;
@@ -387,7 +392,7 @@ std::vector<std::string> example_scripts() {
 
 TEST(Examples, TheFolderHasTheFamilyScripts) {
     const auto v = example_scripts();
-    for (const char* s : {"sobrero.symrep", "walsh.symrep", "multicomplex.symrep"})
+    for (const char* s : {"sobrero.symrep", "walsh.symrep", "multicomplex.symrep", "algebras.symrep"})
         EXPECT_NE(std::find(v.begin(), v.end(), s), v.end()) << s;
 }
 
@@ -764,4 +769,136 @@ TEST(ExamplesWalsh, LogWithANegativeRootPointsToWStar) {
     const auto ls = lines_of(out);
     ASSERT_EQ(ls.size(), 1u) << out;
     EXPECT_TRUE(near_coeffs(exp_series(*As, As->coords_of(parse(S, ls[0]), B)), {1, 2, 0, 0, 0, 0, 0, 0}));
+}
+
+namespace {
+/// R[X]/(p) with the cyclic basis 1, v, ..., v^(n-1): v^i v^j = rem(X^(i+j), p).
+table_ptr polynomial_table(const ex& p, const GiNaC::realsymbol& X, symbols& S) {
+    const int n = GiNaC::expand(p).degree(X);
+    std::vector<std::vector<coeffs>> g(n, std::vector<coeffs>(n));
+    std::vector<ex> mono(n);
+    for (int i = 0; i < n; ++i) {
+        mono[i] = GiNaC::pow(S("v"), i);
+        for (int j = 0; j < n; ++j) {
+            const ex r = GiNaC::rem(GiNaC::pow(X, i + j), GiNaC::expand(p), X);
+            g[i][j] = coeffs(n);
+            for (int k = 0; k < n; ++k) g[i][j][k] = GiNaC::expand(r).coeff(X, k);
+        }
+    }
+    return std::make_shared<table_algebra>("polynomial_table", g, mono);
+}
+
+/// A table given as nested integer lists, with basis symbols `names` (the empty name: 1).
+table_ptr integer_table(const std::vector<std::vector<std::vector<int>>>& G,
+                        const std::vector<std::string>& names, symbols& S, coeffs unit = {}) {
+    std::vector<std::vector<coeffs>> g;
+    for (const auto& row : G) {
+        g.emplace_back();
+        for (const auto& cell : row) g.back().push_back(coeffs(cell.begin(), cell.end()));
+    }
+    std::vector<ex> mono;
+    for (const auto& n : names) mono.push_back(n.empty() ? ex(1) : S(n));
+    return std::make_shared<table_algebra>("integer_table", g, mono, std::move(unit));
+}
+}  // namespace
+
+TEST(ExamplesAlgebras, PrintedResultsByValue) {
+    const run_result& r = run_script("algebras.symrep");
+    ASSERT_EQ(r.status, 0) << r.err;
+    symbols S;
+    const GiNaC::realsymbol& X = S.sym("X");
+    const ex t = S("t");
+    // R + R[eps]/(eps^2), the table of the script written out again
+    auto A = integer_table({{{1, 0, 0}, {0, 0, 0}, {0, 0, 0}},
+                            {{0, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                            {{0, 0, 0}, {0, 0, 1}, {0, 0, 0}}},
+                           {"e0", "e1", "e2"}, S, {1, 1, 0});
+    const auto BA = basis_symbols(S, {"e0", "e1", "e2"});
+    auto elem = [&](const std::string& text) { return A->coords_of(parse(S, text), BA); };
+    // the unit is e0 + e1, not e_0
+    const coeffs one = A->unit();
+    EXPECT_TRUE(same_coeffs(A->multiply(one, {S("x"), S("y"), S("z")}), {S("x"), S("y"), S("z")}));
+    EXPECT_TRUE(same_coeffs(elem(inline_value(r.out, "A = ", "one(A) = ")), one));
+
+    // (II.1.3-4) canonical matrix and (II.1.20) charpoly by the general methods
+    const coeffs w{S("x"), S("y"), S("z")};
+    const auto M = parse_matrix(S, after_heading(r.out, "(II.1.3) [w] ="));
+    const GiNaC::matrix Mw = A->canonical_matrix(w);
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(same(M[i][k], Mw(i, k)));
+    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(II.1.20) charpoly(w, X) =")), A->charpoly(w, X)));
+    EXPECT_TRUE(same(parse(S, inline_value(r.out, "(II.1.21) det [w] = ")), A->determinant(w)));
+
+    // the inverse by the general method (the linear system v u = 1, with the true unit)
+    const coeffs v = elem(inline_value(r.out, "v = "));
+    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "inverse(v) =")), A->inverse(v)));
+
+    // Thm III.4.1: the generator has a minimal polynomial of degree 3 (Krylov, with the true unit)
+    const coeffs d = elem(inline_value(r.out, "(Thm III.4.1) d = "));
+    const coeffs d2 = A->multiply(d, d);
+    const ex md = parse(S, inline_value(r.out, "(Thm III.4.1) d = ", "minpoly(d, X) = "));
+    EXPECT_TRUE(same(md, A->minpoly(d, X)));
+    EXPECT_EQ(GiNaC::expand(md).degree(X), 3);
+
+    // exp(d t), the fundamental system and the power-basis change (III.4.4)
+    const GiNaC::exmap at{{t, numeric(4, 5)}};
+    const coeffs expected = exp_series(*A, algebra::scale(numeric(4, 5), d));
+    EXPECT_TRUE(near_coeffs(subs_all(elem(after_heading(r.out, "(Thm II.2.3) exp(d t) =")), at), expected));
+    const auto F = parse_list(S, after_heading(r.out, "(Thm II.2.3) fundamental_system(d, t) ="));
+    EXPECT_TRUE(near_coeffs(subs_all(coeffs(F.begin(), F.end()), at), expected));
+    const auto P = parse_matrix(S, after_heading(r.out, "(III.4.4) power_basis_change(A, d) ="));
+    ASSERT_EQ(P.size(), 3u);
+    const coeffs* powers[3] = {&one, &d, &d2};
+    for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(same_coeffs(coeffs(P[k].begin(), P[k].end()), *powers[k])) << k;
+
+    // log(v): exp of it gives back v
+    EXPECT_TRUE(near_coeffs(exp_series(*A, elem(after_heading(r.out, "log(v) ="))), v));
+
+    // the non-polynomial algebra N: the generic minimal polynomial, by Krylov on its table
+    auto N = integer_table({{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                            {{0, 1, 0}, {0, 0, 0}, {0, 0, 0}},
+                            {{0, 0, 1}, {0, 0, 0}, {0, 0, 0}}},
+                           {"", "x", "y"}, S);
+    EXPECT_TRUE(same(parse(S, inline_value(r.out, "N polynomial: ", "minpoly(a + b*x + c*y, X) = ")),
+                     N->minpoly({S("a"), S("b"), S("c")}, X)));
+
+    // the Frobenius matrix of P3 = the canonical matrix of v in R[X]/(p), by polynomial remainders
+    const ex p = GiNaC::pow(X, 3) + S("a1") * GiNaC::pow(X, 2) + S("a2") * X + S("a3");
+    auto P3 = polynomial_table(p, X, S);
+    const auto Fr = parse_matrix(S, after_heading(r.out, "frobenius_matrix(P3) ="));
+    const GiNaC::matrix Mv = P3->canonical_matrix({0, 1, 0});
+    ASSERT_EQ(Fr.size(), 3u);
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(same(Fr[i][k], Mv(i, k))) << i << "," << k;
+
+    // the fundamental system of d = 2v in R[X]/(X^3 - 3X + 2), its characteristic polynomial,
+    // and the Euler-type formulas (II.2), numerically against the Taylor series
+    auto Q = polynomial_table(GiNaC::pow(X, 3) - 3 * X + 2, X, S);
+    const coeffs dq{0, 2, 0};
+    EXPECT_TRUE(same(parse(S, inline_value(r.out, "d = 2v in R[X]/(X^3 - 3X + 2):", "charpoly(d, X) = ")),
+                     Q->charpoly(dq, X)));
+    const auto Fq = parse_list(S, after_heading(r.out, "fundamental_system(d, t) ="));
+    EXPECT_TRUE(near_coeffs(subs_all(coeffs(Fq.begin(), Fq.end()), at),
+                            exp_series(*Q, algebra::scale(numeric(4, 5), dq))));
+    const auto Bv = basis_symbols(S, {"v"});
+    auto C = polynomial_table(GiNaC::pow(X, 2) + 1, X, S);
+    const ex Ei = parse(S, inline_value(r.out, "(II.2) d^2 = -1: exp(d t) = "));
+    EXPECT_TRUE(near_coeffs(subs_all(C->coords_of(Ei, Bv), at), exp_series(*C, {0, numeric(-4, 5)})));
+    auto D3 = polynomial_table(GiNaC::pow(X, 3), X, S);
+    const ex En = parse(S, inline_value(r.out, "(II.2) d^3 = 0: exp(d t) = "));
+    EXPECT_TRUE(near_coeffs(subs_all(D3->coords_of(En, Bv), at), exp_series(*D3, {0, numeric(8, 5), 0})));
+}
+
+// The table of an algebra is validated: a non-commutative table is refused, naming the pair.
+TEST(ExamplesAlgebras, InvalidTableIsNamed) {
+    const std::string err_path = ::testing::TempDir() + "/symrep_examples_" +
+                                 std::to_string(getpid()) + "_table_err.txt";
+    const std::string cmd = std::string("'") + SYMREP_BINARY +
+                            "' -e 'algebra_from_table([[[1, 0], [0, 1]], [[0, 0], [1, 0]]])'"
+                            " 2>'" + err_path + "' </dev/null >/dev/null";
+    const int st = std::system(cmd.c_str());
+    const std::string err = slurp(err_path);
+    std::remove(err_path.c_str());
+    EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 1);
+    EXPECT_NE(err.find("commutative"), std::string::npos) << err;
 }
