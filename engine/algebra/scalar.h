@@ -28,6 +28,33 @@ inline bool has_function_call(const GiNaC::ex& x) {
     return false;
 }
 
+/// True when a is a number < 0 or a product with a numeric factor < 0 (-5*t).
+inline bool has_negative_sign(const GiNaC::ex& a) {
+    if (GiNaC::is_a<GiNaC::numeric>(a)) return GiNaC::ex_to<GiNaC::numeric>(a).is_negative();
+    if (GiNaC::is_a<GiNaC::mul>(a))
+        for (std::size_t k = 0; k < a.nops(); ++k)
+            if (GiNaC::is_a<GiNaC::numeric>(a.op(k)))
+                return GiNaC::ex_to<GiNaC::numeric>(a.op(k)).is_negative();
+    return false;
+}
+
+/// cos(-u) -> cos(u), sin(-u) -> -sin(u), everywhere in e (GiNaC leaves
+/// cos(-5*t) alone, so that cos(5*t) and cos(-5*t) would not combine).
+inline GiNaC::ex normalize_trig_signs(const GiNaC::ex& e) {
+    struct trig_sign : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (GiNaC::is_a<GiNaC::function>(y) && y.nops() == 1 && has_negative_sign(y.op(0))) {
+                const std::string f = GiNaC::ex_to<GiNaC::function>(y).get_name();
+                if (f == "cos") return GiNaC::cos(-y.op(0));
+                if (f == "sin") return -GiNaC::sin(-y.op(0));
+            }
+            return y;
+        }
+    } m;
+    return m(e);
+}
+
 /// Bring an exact coefficient to its simplest stored form: rational functions of
 /// symbols are expanded and normalized (one fraction, common factors cancelled);
 /// expressions with function calls, such as the closed forms of exp(w t), are only
@@ -35,7 +62,7 @@ inline bool has_function_call(const GiNaC::ex& x) {
 /// of becoming one fraction over exp(...). Identity for doubles.
 inline GiNaC::ex tidy(const GiNaC::ex& x) {
     const GiNaC::ex e = GiNaC::expand(x);
-    return has_function_call(e) ? e : GiNaC::normal(e);
+    return has_function_call(e) ? GiNaC::expand(normalize_trig_signs(e)) : GiNaC::normal(e);
 }
 inline double tidy(double x) { return x; }
 
