@@ -1,0 +1,194 @@
+// symrep/vector/print.cpp -- to_string(): vector and scalar expressions in the
+// thesis notation, with a deterministic term and factor order.
+//
+// GiNaC orders the terms of a sum and the factors of a product by hash values
+// and symbol serial numbers, which depend on creation order; here sums are
+// ordered by their vector monomial and then by text, products by text with the
+// vector factor last. Terms of a vector sum with the same vector monomial are
+// printed together: (a + b)*w.
+#include <algorithm>
+#include <sstream>
+
+#include "vector/vector.h"
+#include "vector/vector_internal.h"
+
+namespace symrep {
+
+using GiNaC::ex;
+using GiNaC::is_a;
+using GiNaC::ex_to;
+using namespace detail;
+
+namespace {
+
+std::string str(const ex& e);
+
+std::string ginac_text(const ex& e) {
+    std::ostringstream os;
+    os << e;
+    return os.str();
+}
+
+bool is_norm_sq(const ex& e) { return is_dot(e) && e.op(0).is_equal(e.op(1)); }
+
+// Printed without parentheses as a factor of a product or an operand of x / .
+bool is_simple(const ex& e) {
+    if (is_a<GiNaC::symbol>(e) || is_a<GiNaC::matrix>(e) || is_a<GiNaC::constant>(e)) return true;
+    if (is_a<GiNaC::numeric>(e)) {
+        const auto& n = ex_to<GiNaC::numeric>(e);
+        return n.is_integer() && !n.is_negative();
+    }
+    if (is_norm_sq(e) || is_triple(e)) return true;
+    if (is_a<GiNaC::function>(e)) return !is_cross(e) && !is_dot(e);
+    if (is_a<GiNaC::power>(e))
+        return !(is_a<GiNaC::numeric>(e.op(1)) && ex_to<GiNaC::numeric>(e.op(1)).is_negative());
+    return false;
+}
+
+std::string factor_text(const ex& e) { return is_simple(e) ? str(e) : "(" + str(e) + ")"; }
+
+// |a|
+std::string operand_norm(const ex& a) { return "|" + str(a) + "|"; }
+
+std::string power_text(const ex& base, const ex& expo) {
+    if (is_norm_sq(base)) {  // |a|^(2k)
+        const ex n = 2 * expo;
+        const std::string a = operand_norm(base.op(0));
+        if (n.is_equal(1)) return a;
+        if (is_a<GiNaC::numeric>(n) && ex_to<GiNaC::numeric>(n).is_pos_integer()) return a + "^" + str(n);
+        return a + "^(" + str(n) + ")";
+    }
+    if (expo.is_equal(GiNaC::numeric(1, 2))) return "sqrt(" + str(base) + ")";
+    std::string b = str(base);
+    if (!is_simple(base) || is_a<GiNaC::power>(base) || is_norm_sq(base)) b = "(" + b + ")";
+    if (is_a<GiNaC::numeric>(expo) && ex_to<GiNaC::numeric>(expo).is_pos_integer()) return b + "^" + str(expo);
+    return b + "^(" + str(expo) + ")";
+}
+
+
+// A product given as numeric coefficient and other factors (vector factor, if
+// any, is printed last among the numerator factors).
+std::string product_text(const GiNaC::numeric& coef, const std::vector<ex>& factors) {
+    std::vector<std::string> num, den;
+    std::string vec;
+    for (const ex& f : factors) {
+        if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
+            ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
+            const ex inv = GiNaC::pow(f.op(0), -f.op(1));
+            den.push_back(factor_text(inv));
+        } else if (kind(f)) {
+            vec = factor_text(f);
+        } else {
+            num.push_back(factor_text(f));
+        }
+    }
+    std::sort(num.begin(), num.end());
+    std::sort(den.begin(), den.end());
+    if (!vec.empty()) num.push_back(vec);
+    const GiNaC::numeric p = coef.numer(), q = coef.denom();
+    std::string sign;
+    GiNaC::numeric ap = p;
+    if (p.is_negative()) {
+        sign = "-";
+        ap = -p;
+    }
+    if (!ap.is_equal(1) || num.empty()) num.insert(num.begin(), ginac_text(ap));
+    if (!q.is_equal(1)) den.insert(den.begin(), ginac_text(q));
+    std::string s = sign;
+    for (std::size_t i = 0; i < num.size(); ++i) s += (i ? "*" : "") + num[i];
+    if (!den.empty()) {
+        s += "/";
+        if (den.size() == 1) s += den[0];
+        else {
+            s += "(";
+            for (std::size_t i = 0; i < den.size(); ++i) s += (i ? "*" : "") + den[i];
+            s += ")";
+        }
+    }
+    return s;
+}
+
+std::string mul_text(const ex& e) {
+    GiNaC::numeric c = 1;
+    std::vector<ex> fs;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        if (is_a<GiNaC::numeric>(e.op(i))) c *= ex_to<GiNaC::numeric>(e.op(i));
+        else fs.push_back(e.op(i));
+    }
+    return product_text(c, fs);
+}
+
+std::string add_text(const ex& e) {
+    // group by vector monomial (text), scalar sums get the key ""
+    std::map<std::string, std::pair<ex, ex>> groups;  // vector text -> (monomial, coefficient)
+    std::vector<std::string> scalars;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        const ex t = e.op(i);
+        if (kind(t)) {
+            const auto [s, v] = split_scalar(t);
+            const std::string k = str(v);
+            auto it = groups.find(k);
+            if (it == groups.end()) groups.emplace(k, std::make_pair(v, s));
+            else it->second.second += s;
+        } else {
+            scalars.push_back(str(t));
+        }
+    }
+    std::vector<std::string> terms;
+    for (auto& [k, mc] : groups) {
+        const ex& c = mc.second;
+        if (c.is_zero()) continue;
+        if (is_a<GiNaC::add>(c)) terms.push_back("(" + str(c) + ")*" + factor_text(mc.first));
+        else terms.push_back(str(c * mc.first));
+    }
+    // scalar terms: sorted by text without sign
+    std::sort(scalars.begin(), scalars.end(), [](const std::string& a, const std::string& b) {
+        const std::string x = a.rfind("-", 0) == 0 ? a.substr(1) : a;
+        const std::string y = b.rfind("-", 0) == 0 ? b.substr(1) : b;
+        return x != y ? x < y : a < b;
+    });
+    terms.insert(terms.end(), scalars.begin(), scalars.end());
+    if (terms.empty()) return "0";
+    std::string s = terms[0];
+    for (std::size_t i = 1; i < terms.size(); ++i)
+        s += terms[i].rfind("-", 0) == 0 ? " - " + terms[i].substr(1) : " + " + terms[i];
+    return s;
+}
+
+std::string str(const ex& e) {
+    if (is_a<GiNaC::symbol>(e)) return ex_to<GiNaC::symbol>(e).get_name();
+    if (is_a<GiNaC::numeric>(e)) return ginac_text(e);
+    if (is_a<GiNaC::matrix>(e)) {
+        const auto& m = ex_to<GiNaC::matrix>(e);
+        std::string s = "[";
+        for (unsigned i = 0; i < m.rows(); ++i)
+            for (unsigned j = 0; j < m.cols(); ++j) s += (i + j ? ", " : "") + str(m(i, j));
+        return s + "]";
+    }
+    if (is_a<GiNaC::add>(e)) return add_text(e);
+    if (is_a<GiNaC::mul>(e)) return mul_text(e);
+    if (is_a<GiNaC::power>(e)) {
+        if (is_a<GiNaC::numeric>(e.op(1)) && ex_to<GiNaC::numeric>(e.op(1)).is_negative())
+            return product_text(1, {e});
+        return power_text(e.op(0), e.op(1));
+    }
+    if (is_cross(e)) return factor_text(e.op(0)) + " x " + factor_text(e.op(1));
+    if (is_norm_sq(e)) return operand_norm(e.op(0)) + "^2";
+    if (is_dot(e)) return factor_text(e.op(0)) + " . " + factor_text(e.op(1));
+    if (is_triple(e)) return "[" + str(e.op(0)) + ", " + str(e.op(1)) + ", " + str(e.op(2)) + "]";
+    if (is_a<GiNaC::function>(e)) {
+        std::string s = ex_to<GiNaC::function>(e).get_name() + "(";
+        for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + str(e.op(i));
+        return s + ")";
+    }
+    return ginac_text(e);
+}
+
+}  // namespace
+
+std::string to_string(const ex& e) {
+    kind(e);  // reject ill-formed expressions with a typed error
+    return str(e);
+}
+
+}  // namespace symrep

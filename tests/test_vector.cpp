@@ -1,0 +1,224 @@
+// Tests of engine/vector: coordinate-free 3-vectors, canonical form, exact equality.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+#include <string>
+
+#include "io/error.h"
+#include "vector/vector.h"
+
+using GiNaC::ex;
+using namespace symrep;
+
+namespace {
+
+struct Vec : ::testing::Test {
+    ex a = vector_symbol("a"), b = vector_symbol("b"), c = vector_symbol("c"), d = vector_symbol("d");
+    ex w = vector_symbol("w"), r0 = vector_symbol("r0"), v0 = vector_symbol("v0");
+    GiNaC::realsymbol s{"s"}, u{"u"};
+};
+
+ex lit(const ex& x, const ex& y, const ex& z) { return vector_literal(x, y, z); }
+
+// Component check with random integer components (independent of equal()).
+bool numerically_equal(const ex& x, const ex& y, unsigned seed) {
+    std::mt19937 g(seed);
+    std::uniform_int_distribution<int> dist(-9, 9);
+    std::map<ex, ex, GiNaC::ex_is_less> m;
+    for (const ex& v : vector_symbols(GiNaC::lst{x, y})) m[v] = lit(dist(g), dist(g), dist(g));
+    const ex cx = subs_components(x, m), cy = subs_components(y, m);
+    return GiNaC::normal(GiNaC::expand(cx - cy)).is_zero() ||
+           (GiNaC::is_a<GiNaC::matrix>(cx) && GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(cx).sub(
+                                                   GiNaC::ex_to<GiNaC::matrix>(cy))).is_zero_matrix());
+}
+
+}  // namespace
+
+TEST_F(Vec, RegistryReturnsTheSameSymbol) {
+    EXPECT_TRUE(vector_symbol("a").is_equal(a));
+    EXPECT_TRUE(is_vector_symbol(a));
+    EXPECT_FALSE(is_vector_symbol(s));
+    EXPECT_TRUE(is_vector(2 * a + s * b));
+    EXPECT_FALSE(is_vector(dot(a, b) * s));
+    EXPECT_TRUE(is_vector(lit(1, 2, s)));
+}
+
+TEST_F(Vec, LinearityAndScalarExtraction) {
+    EXPECT_TRUE((cross(a, 2 * b + s * c) - (2 * cross(a, b) + s * cross(a, c))).is_zero());
+    EXPECT_TRUE((cross(3 * a + b, u * c) - (3 * u * cross(a, c) + u * cross(b, c))).is_zero());
+    EXPECT_TRUE((dot(s * a - b, c) - (s * dot(a, c) - dot(b, c))).is_zero());
+    EXPECT_TRUE((cross(b, a) + cross(a, b)).is_zero());
+    EXPECT_TRUE((dot(b, a) - dot(a, b)).is_zero());
+    EXPECT_TRUE((triple(b, a, c) + triple(a, b, c)).is_zero());
+    EXPECT_TRUE((triple(c, a, b) - triple(a, b, c)).is_zero());
+    EXPECT_FALSE((cross(a, b) - cross(a, c)).is_zero());
+}
+
+TEST_F(Vec, CrossWithItselfIsZero) {
+    EXPECT_TRUE(cross(a, a).is_zero());
+    EXPECT_TRUE(cross(2 * a, s * a).is_zero());
+    EXPECT_TRUE(dot(a, cross(a, b)).is_zero());
+    EXPECT_TRUE(dot(cross(a, b), b).is_zero());
+    EXPECT_TRUE(triple(a, b, a).is_zero());
+    EXPECT_TRUE(cross(w, cross(a, a)).is_zero());  // 0 is the zero vector
+    EXPECT_FALSE(cross(a, b).is_zero());
+}
+
+TEST_F(Vec, IdentitiesVanish) {
+    const std::vector<std::pair<std::string, ex>> ids = {
+        {"Jacobi", cross(a, cross(b, c)) + cross(b, cross(c, a)) + cross(c, cross(a, b))},
+        {"BAC-CAB", cross(a, cross(b, c)) - (dot(a, c) * b - dot(a, b) * c)},
+        {"BAC-CAB left", cross(cross(a, b), c) - (dot(a, c) * b - dot(b, c) * a)},
+        {"Lagrange", dot(cross(a, b), cross(c, d)) - (dot(a, c) * dot(b, d) - dot(a, d) * dot(b, c))},
+        {"|a x b|^2", dot(cross(a, b), cross(a, b)) - (dot(a, a) * dot(b, b) - pow(dot(a, b), 2))},
+        {"cyclic", dot(a, cross(b, c)) - dot(b, cross(c, a))},
+        {"cyclic2", dot(cross(a, b), c) - triple(c, a, b)},
+        {"antisym", triple(a, b, c) + dot(b, cross(a, c))},
+        {"cross of crosses", cross(cross(a, b), cross(c, d)) - (triple(a, b, d) * c - triple(a, b, c) * d)},
+        {"Gram", triple(a, b, c) * triple(a, b, c) -
+                     dot(cross(a, b), cross(a, b)) * dot(c, c) +
+                     pow(dot(c, cross(a, b)), 2) - pow(triple(a, b, c), 2) + pow(triple(a, b, c), 2) * 0},
+        {"w x (w x w x r)", cross(w, cross(w, cross(w, r0))) + dot(w, w) * cross(w, r0)},
+    };
+    for (const auto& [name, e] : ids) {
+        if (name == "Gram") continue;  // checked below in an exact form
+        EXPECT_TRUE(canonical(e).is_zero()) << name << ": " << to_string(canonical(e));
+        EXPECT_TRUE(equal(e, 0)) << name;
+    }
+    // [a,b,c]^2 = Gram determinant of a, b, c
+    const ex gram = dot(a, a) * (dot(b, b) * dot(c, c) - pow(dot(b, c), 2)) -
+                    dot(a, b) * (dot(a, b) * dot(c, c) - dot(b, c) * dot(a, c)) +
+                    dot(a, c) * (dot(a, b) * dot(b, c) - dot(b, b) * dot(a, c));
+    EXPECT_TRUE(canonical(pow(triple(a, b, c), 2) - gram).is_zero()) << to_string(canonical(pow(triple(a, b, c), 2)));
+    EXPECT_TRUE(equal(pow(triple(a, b, c), 2), gram));
+    // four vectors: the normal form is not unique, equal() decides
+    const ex four = triple(a, b, c) * d - (dot(a, d) * cross(b, c) + dot(b, d) * cross(c, a) + dot(c, d) * cross(a, b));
+    EXPECT_TRUE(equal(four, 0));
+    EXPECT_TRUE(equal(canonical(four), 0));
+}
+
+TEST_F(Vec, PerturbedIdentitiesDoNotVanish) {
+    const std::vector<ex> non = {
+        cross(a, cross(b, c)) + cross(b, cross(c, a)) - cross(c, cross(a, b)),
+        cross(a, cross(b, c)) - (dot(a, b) * b - dot(a, b) * c),
+        cross(cross(a, b), c) - (dot(a, c) * b - dot(a, c) * a),
+        dot(cross(a, b), cross(c, d)) - (dot(a, c) * dot(b, d) + dot(a, d) * dot(b, c)),
+        dot(a, cross(b, c)) - dot(b, cross(a, c)),
+        triple(a, b, c) - triple(a, b, d),
+        cross(w, cross(w, cross(w, r0))) - dot(w, w) * cross(w, r0),
+        triple(a, b, c) * d - (dot(a, d) * cross(b, c) + dot(b, d) * cross(c, a) - dot(c, d) * cross(a, b)),
+    };
+    for (const ex& e : non) {
+        EXPECT_FALSE(canonical(e).is_zero()) << to_string(e);
+        EXPECT_FALSE(equal(e, 0)) << to_string(e);
+    }
+}
+
+TEST_F(Vec, NestedCrossesAgreeWithComponents) {
+    const ex atoms[] = {a, b, c, d, w};
+    std::mt19937 g(12345);
+    std::function<ex(int)> tree = [&](int depth) -> ex {
+        if (depth == 0 || g() % 4 == 0) return atoms[g() % 5] * int(g() % 3 + 1);
+        ex x = cross(tree(depth - 1), tree(depth - 1));
+        if (g() % 3 == 0) x += atoms[g() % 5];
+        return x;
+    };
+    int nontrivial = 0;
+    for (int k = 0; k < 12; ++k) {
+        const ex x = cross(tree(3), tree(3));  // depth 4
+        const ex cx = canonical(x);
+        EXPECT_TRUE(equal(cx, x)) << to_string(x);
+        EXPECT_TRUE(numerically_equal(cx, x, 7 + k)) << to_string(x);
+        if (!cx.is_zero()) {
+            ++nontrivial;
+            EXPECT_FALSE(equal(cx, x + cross(a, b) * s));
+        }
+        const ex sx = dot(x, tree(2));
+        EXPECT_TRUE(equal(canonical(sx), sx));
+    }
+    EXPECT_GT(nontrivial, 3);
+}
+
+TEST_F(Vec, LiteralsByComponents) {
+    EXPECT_TRUE((cross(lit(1, 0, 0), lit(0, 1, 0)) - lit(0, 0, 1)).evalm().is_zero_matrix());
+    EXPECT_TRUE((dot(lit(1, 2, 3), lit(4, 5, 6)) - 32).is_zero());
+    EXPECT_TRUE((triple(lit(1, 0, 0), lit(0, 1, 0), lit(0, 0, 1)) - 1).is_zero());
+    std::map<ex, ex, GiNaC::ex_is_less> m{{w, lit(0, 0, u)}, {r0, lit(s, 2, 3)}};
+    const ex c1 = subs_components(cross(w, r0), m);
+    EXPECT_TRUE((c1 - lit(-2 * u, u * s, 0)).evalm().is_zero_matrix()) << c1;
+    EXPECT_TRUE((subs_components(dot(w, r0) + norm(w), m) - (3 * u + sqrt(u * u))).is_zero());
+    const ex half = subs_vectors(cross(w, r0) + cross(a, w), {{w, lit(1, 0, 0)}});
+    EXPECT_TRUE(equal(half, cross(lit(1, 0, 0), r0) - cross(lit(1, 0, 0), a)));
+    EXPECT_TRUE(equal(canonical(lit(1, s, 0) + 2 * lit(0, 1, u)), lit(1, s + 2, 2 * u)));
+    EXPECT_EQ(to_string(canonical(lit(1, s, 0) + 2 * lit(0, 1, u))), "[1, 2 + s, 2*u]");
+}
+
+TEST_F(Vec, TimeDerivative) {
+    GiNaC::realsymbol t("t");
+    const ex r = vector_function("r", t);
+    const ex r1 = derivative(r), r2 = derivative(r1);
+    EXPECT_EQ(to_string(r1), "r'");
+    EXPECT_TRUE((diff_t(cross(w, r), t) - cross(w, r1)).is_zero());
+    EXPECT_TRUE((diff_t(r1, t) - r2).is_zero());
+    EXPECT_TRUE(diff_t(cross(w, r0), t).is_zero());
+    EXPECT_TRUE(equal(diff_t(t * t * r, t), 2 * t * r + t * t * r1));
+    EXPECT_TRUE(equal(diff_t(norm(r), t), dot(r, r1) / norm(r)));
+    EXPECT_TRUE(equal(diff_t(cross(r, r1), t), cross(r, r2)));
+    EXPECT_TRUE(equal(diff_t(cos(u * t) * lit(1, t, 0), t), -u * sin(u * t) * lit(1, t, 0) + cos(u * t) * lit(0, 1, 0)));
+    EXPECT_THROW(derivative(w), type_error);
+}
+
+TEST_F(Vec, DeterministicText) {
+    // symbols created in opposite orders print the same way
+    const ex q2 = vector_symbol("qX"), p2 = vector_symbol("pX");
+    const ex p3 = vector_symbol("pY"), q3 = vector_symbol("qY");
+    const ex e2 = cross(q2, cross(p2, q2)) + s * cross(q2, p2) + dot(q2, p2) * p2;
+    const ex e3 = cross(q3, cross(p3, q3)) + s * cross(q3, p3) + dot(q3, p3) * p3;
+    std::string t2 = to_string(canonical(e2)), t3 = to_string(canonical(e3));
+    for (auto& ch : t2)
+        if (ch == 'X') ch = 'Y';
+    EXPECT_EQ(t2, t3);
+    EXPECT_EQ(to_string(canonical(cross(w, cross(w, r0)))), "-|w|^2*r0 + (r0 . w)*w");
+    EXPECT_EQ(to_string(cross(w, cross(w, r0))), "-(w x (r0 x w))");  // r0 < w by name
+    EXPECT_EQ(to_string(norm(w) * dot(w, r0)), "(r0 . w)*|w|");
+    EXPECT_EQ(to_string(canonical(triple(c, b, a))), "-[a, b, c]");
+    EXPECT_EQ(to_string(canonical(dot(w, r0) / dot(w, w) * w)), "(r0 . w)*w/|w|^2");
+}
+
+TEST_F(Vec, RotatingFrameExpressionFinishes) {
+    GiNaC::realsymbol t("t");
+    const ex e = cross(w, cross(w, r0 + v0 * t));
+    const ex cf = canonical(e);
+    EXPECT_TRUE(equal(cf, dot(w, r0) * w - dot(w, w) * r0 + t * (dot(w, v0) * w - dot(w, w) * v0)));
+    EXPECT_TRUE(equal(cf, e));
+}
+
+TEST_F(Vec, BadInputIsATypedError) {
+    GiNaC::realsymbol x("x"), y("y");
+    try {
+        cross(x, y);
+        FAIL() << "no error";
+    } catch (const type_error& err) {
+        const std::string msg = err.what();
+        EXPECT_NE(msg.find("argument 1"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("x"), std::string::npos) << msg;
+    }
+    try {
+        dot(w, 2 * y);
+        FAIL() << "no error";
+    } catch (const type_error& err) {
+        EXPECT_NE(std::string(err.what()).find("argument 2 (2*y)"), std::string::npos) << err.what();
+    }
+    EXPECT_THROW(is_vector(w + x), type_error);
+    EXPECT_THROW(is_vector(w * r0), type_error);
+    EXPECT_THROW(is_vector(sin(w)), type_error);
+    EXPECT_THROW(norm(x), type_error);
+    EXPECT_THROW(canonical(w + 1), type_error);
+    EXPECT_THROW(equal(w, x), type_error);
+    EXPECT_THROW(subs_components(cross(w, r0), {{w, lit(1, 2, 3)}}), type_error);
+    EXPECT_THROW(subs_components(w, {{w, x}}), type_error);
+    EXPECT_THROW(vector_symbol(""), type_error);
+    EXPECT_THROW(cross(w, GiNaC::matrix(2, 1, GiNaC::lst{1, 2})), type_error);
+    EXPECT_THROW(vector_literal(w, 0, 0), type_error);
+}
