@@ -76,13 +76,9 @@ TEST_F(Vec, IdentitiesVanish) {
         {"cyclic2", dot(cross(a, b), c) - triple(c, a, b)},
         {"antisym", triple(a, b, c) + dot(b, cross(a, c))},
         {"cross of crosses", cross(cross(a, b), cross(c, d)) - (triple(a, b, d) * c - triple(a, b, c) * d)},
-        {"Gram", triple(a, b, c) * triple(a, b, c) -
-                     dot(cross(a, b), cross(a, b)) * dot(c, c) +
-                     pow(dot(c, cross(a, b)), 2) - pow(triple(a, b, c), 2) + pow(triple(a, b, c), 2) * 0},
         {"w x (w x w x r)", cross(w, cross(w, cross(w, r0))) + dot(w, w) * cross(w, r0)},
     };
     for (const auto& [name, e] : ids) {
-        if (name == "Gram") continue;  // checked below in an exact form
         EXPECT_TRUE(canonical(e).is_zero()) << name << ": " << to_string(canonical(e));
         EXPECT_TRUE(equal(e, 0)) << name;
     }
@@ -96,6 +92,21 @@ TEST_F(Vec, IdentitiesVanish) {
     const ex four = triple(a, b, c) * d - (dot(a, d) * cross(b, c) + dot(b, d) * cross(c, a) + dot(c, d) * cross(a, b));
     EXPECT_TRUE(equal(four, 0));
     EXPECT_TRUE(equal(canonical(four), 0));
+    EXPECT_FALSE(canonical(four).is_zero());  // so the component test above did the work
+}
+
+// With a transcendental coefficient the random-point rejection is inconclusive
+// and canonical() does not see the four-vector identity: the symbolic
+// component test decides, both ways.
+TEST_F(Vec, ComponentTestIsTheGroundTruth) {
+    const ex four = triple(a, b, c) * d - (dot(a, d) * cross(b, c) + dot(b, d) * cross(c, a) + dot(c, d) * cross(a, b));
+    EXPECT_TRUE(equal(sin(s) * cross(a, b) + sin(s) * four, sin(s) * cross(a, b)));
+    EXPECT_FALSE(equal(sin(s) * cross(a, b) + sin(s) * four, sin(s) * cross(b, a)));
+    EXPECT_FALSE(equal(exp(s) * four + sin(s) * d, 0));
+    EXPECT_TRUE(equal(norm(w) * norm(w), dot(w, w)));
+    EXPECT_TRUE(equal(dot(w, r0) / dot(w, w), dot(r0, w) / pow(norm(w), 2)));
+    EXPECT_FALSE(equal(dot(w, r0) / dot(w, w), dot(r0, w) / norm(w)));
+    EXPECT_TRUE(equal(0, cross(w, w)));
 }
 
 TEST_F(Vec, PerturbedIdentitiesDoNotVanish) {

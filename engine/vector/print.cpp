@@ -118,6 +118,11 @@ std::string mul_text(const ex& e) {
     return product_text(c, fs);
 }
 
+// A term of a sum: a bare cross or dot product gets parentheses, (a . b) + c.
+std::string term_text(const ex& t) {
+    return (is_cross(t) || (is_dot(t) && !is_norm_sq(t))) ? "(" + str(t) + ")" : str(t);
+}
+
 std::string add_text(const ex& e) {
     // group by vector monomial (text), scalar sums get the key ""
     std::map<std::string, std::pair<ex, ex>> groups;  // vector text -> (monomial, coefficient)
@@ -131,7 +136,7 @@ std::string add_text(const ex& e) {
             if (it == groups.end()) groups.emplace(k, std::make_pair(v, s));
             else it->second.second += s;
         } else {
-            scalars.push_back(str(t));
+            scalars.push_back(term_text(t));
         }
     }
     std::vector<std::string> terms;
@@ -139,7 +144,7 @@ std::string add_text(const ex& e) {
         const ex& c = mc.second;
         if (c.is_zero()) continue;
         if (is_a<GiNaC::add>(c)) terms.push_back("(" + str(c) + ")*" + factor_text(mc.first));
-        else terms.push_back(str(c * mc.first));
+        else terms.push_back(term_text(c * mc.first));
     }
     // scalar terms: sorted by text without sign
     std::sort(scalars.begin(), scalars.end(), [](const std::string& a, const std::string& b) {
