@@ -233,3 +233,22 @@ TEST_F(Vec, BadInputIsATypedError) {
     EXPECT_THROW(cross(w, GiNaC::matrix(2, 1, GiNaC::lst{1, 2})), type_error);
     EXPECT_THROW(vector_literal(w, 0, 0), type_error);
 }
+
+// Thesis VI.1.49: the exact solution of r'' + 2 w x r' = g, r(0) = r0, r'(0) = v0.
+TEST_F(Vec, ThesisCoriolisSolutionSatisfiesItsProblem) {
+    GiNaC::realsymbol t("t");
+    const ex g = vector_symbol("g");
+    const ex W = norm(w);
+    const ex A = g + 2 * cross(v0, w);
+    const ex r = r0 + v0 * t + A / (4 * pow(W, 2)) * (1 - cos(2 * W * t)) +
+                 cross(w, A) / (4 * pow(W, 3)) * (sin(2 * W * t) - 2 * W * t) +
+                 dot(w, g) / (4 * pow(W, 4)) * (2 * pow(W, 2) * t * t + cos(2 * W * t) - 1) * w;
+    const ex r1 = diff_t(r, t), r2 = diff_t(r1, t);
+    const ex residual = r2 + 2 * cross(w, r1) - g;
+    EXPECT_TRUE(canonical(residual).is_zero()) << to_string(canonical(residual));
+    EXPECT_TRUE(equal(residual, 0));
+    EXPECT_TRUE(equal(r.subs(t == 0), r0));
+    EXPECT_TRUE(equal(r1.subs(t == 0), v0));
+    // a wrong sign in the Coriolis term is detected
+    EXPECT_FALSE(equal(r2 - 2 * cross(w, r1) - g, 0));
+}
