@@ -147,6 +147,7 @@ TEST_F(Vec, NestedCrossesAgreeWithComponents) {
         }
         const ex sx = dot(x, tree(2));
         EXPECT_TRUE(equal(canonical(sx), sx));
+        EXPECT_EQ(to_string(canonical(cx)), to_string(cx));  // idempotent
     }
     EXPECT_GT(nontrivial, 3);
 }
@@ -184,12 +185,20 @@ TEST_F(Vec, DeterministicText) {
     // symbols created in opposite orders print the same way
     const ex q2 = vector_symbol("qX"), p2 = vector_symbol("pX");
     const ex p3 = vector_symbol("pY"), q3 = vector_symbol("qY");
+    const ex &pX_ = p2, &qX_ = q2, &pY_ = p3, &qY_ = q3;
     const ex e2 = cross(q2, cross(p2, q2)) + s * cross(q2, p2) + dot(q2, p2) * p2;
     const ex e3 = cross(q3, cross(p3, q3)) + s * cross(q3, p3) + dot(q3, p3) * p3;
     std::string t2 = to_string(canonical(e2)), t3 = to_string(canonical(e3));
     for (auto& ch : t2)
         if (ch == 'X') ch = 'Y';
     EXPECT_EQ(t2, t3);
+    // a rational coefficient whose denominator is a sum: its sign convention too
+    const ex f2 = (dot(pX_, qX_) * pX_ + qX_) / (dot(qX_, qX_) - dot(pX_, pX_));
+    const ex f3 = (dot(pY_, qY_) * pY_ + qY_) / (dot(qY_, qY_) - dot(pY_, pY_));
+    std::string u2 = to_string(canonical(f2)), u3 = to_string(canonical(f3));
+    for (auto& ch : u2)
+        if (ch == 'X') ch = 'Y';
+    EXPECT_EQ(u2, u3);
     EXPECT_EQ(to_string(canonical(cross(w, cross(w, r0)))), "-|w|^2*r0 + (r0 . w)*w");
     EXPECT_EQ(to_string(cross(w, cross(w, r0))), "-(w x (r0 x w))");  // r0 < w by name
     EXPECT_EQ(to_string(norm(w) * dot(w, r0)), "(r0 . w)*|w|");

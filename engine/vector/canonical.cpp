@@ -266,6 +266,8 @@ ex normalize_coef(const ex& c) {
     const ex e = gram_reduce(c);
     if (e.is_zero()) return e;
     if (has_other_function(e)) return GiNaC::expand(normalize_trig_signs(e));
+    // (the sign of a sum in a denominator follows GiNaC's internal order;
+    // to_string() normalizes it in the text)
     return GiNaC::normal(e);
 }
 

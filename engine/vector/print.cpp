@@ -68,10 +68,26 @@ std::string power_text(const ex& base, const ex& expo) {
 
 // A product given as numeric coefficient and other factors (vector factor, if
 // any, is printed last among the numerator factors).
-std::string product_text(const GiNaC::numeric& coef, const std::vector<ex>& factors) {
+std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& factors) {
     std::vector<std::string> num, den;
     std::string vec;
+    GiNaC::numeric coef = coef_in;
     for (const ex& f : factors) {
+        // a sum (or an integer power of one) whose text starts with '-' is
+        // negated, so that the text does not depend on GiNaC's term order
+        const bool is_pw = is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
+                           ex_to<GiNaC::numeric>(f.op(1)).is_integer();
+        const ex base = is_pw ? f.op(0) : f;
+        if (is_a<GiNaC::add>(base) && !kind(base) && str(base).rfind("-", 0) == 0) {
+            // text only: GiNaC would restore its own sign choice in a power
+            const std::string t = "(" + str(GiNaC::expand(-base)) + ")";
+            GiNaC::numeric k = is_pw ? ex_to<GiNaC::numeric>(f.op(1)) : GiNaC::numeric(1);
+            if (k.is_odd()) coef = -coef;
+            const bool in_den = k.is_negative();
+            if (in_den) k = -k;
+            (in_den ? den : num).push_back(k.is_equal(1) ? t : t + "^" + ginac_text(k));
+            continue;
+        }
         if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
             ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
             const ex inv = GiNaC::pow(f.op(0), -f.op(1));
