@@ -261,3 +261,21 @@ TEST_F(Vec, ThesisCoriolisSolutionSatisfiesItsProblem) {
     // a wrong sign in the Coriolis term is detected
     EXPECT_FALSE(equal(r2 - 2 * cross(w, r1) - g, 0));
 }
+
+TEST_F(Vec, CanonicalTermsInFixedOrder) {
+    const auto ts = canonical_terms(cross(w, cross(w, r0)) + s * cross(r0, w) + lit(1, 0, 0) + 2 * a);
+    ASSERT_EQ(ts.size(), 5u);
+    EXPECT_TRUE(ts[0].monomial.is_equal(a));
+    EXPECT_TRUE((ts[0].coefficient - 2).is_zero());
+    EXPECT_TRUE(ts[1].monomial.is_equal(r0));
+    EXPECT_TRUE((ts[1].coefficient + dot(w, w)).is_zero());
+    EXPECT_TRUE(ts[2].monomial.is_equal(w));
+    EXPECT_TRUE((ts[2].coefficient - dot(r0, w)).is_zero());
+    EXPECT_TRUE(ts[3].monomial.is_equal(cross(r0, w)));
+    EXPECT_TRUE((ts[3].coefficient - s).is_zero());
+    EXPECT_TRUE(is_vector_literal(ts[4].monomial));
+    const auto sc = canonical_terms(dot(cross(a, b), cross(a, b)));
+    ASSERT_EQ(sc.size(), 1u);
+    EXPECT_TRUE(sc[0].monomial.is_equal(1));
+    EXPECT_TRUE(canonical_terms(cross(a, b) + cross(b, a)).empty());
+}

@@ -273,13 +273,17 @@ ex normalize_coef(const ex& c) {
 
 }  // namespace
 
-ex canonical(const ex& e) {
-    if (!kind(e)) return normalize_coef(rscal(e));
+std::vector<vector_term> canonical_terms(const ex& e) {
+    if (!kind(e)) {
+        const ex c = normalize_coef(rscal(e));
+        if (c.is_zero()) return {};
+        return {vector_term{1, c}};
+    }
     const vlin v = rvec(e);
-    ex result = 0;
+    std::vector<vector_term> out;
     ex lit[3] = {0, 0, 0};
     bool has_lit = false;
-    for (const auto& [k, mc] : v) {
+    for (const auto& [k, mc] : v) {  // in key order: symbols by name, literals, cross products
         const mon& m = mc.first;
         if (!m.is_cross && is_vector_literal(m.a)) {
             for (unsigned i = 0; i < 3; ++i) lit[i] += mc.second * comp(m.a, i);
@@ -287,13 +291,19 @@ ex canonical(const ex& e) {
             continue;
         }
         const ex c = normalize_coef(mc.second);
-        if (!c.is_zero()) result += c * m.value();
+        if (!c.is_zero()) out.push_back(vector_term{m.value(), c});
     }
     if (has_lit) {
         for (auto& x : lit) x = normalize_coef(x);
         if (!(lit[0].is_zero() && lit[1].is_zero() && lit[2].is_zero()))
-            result += GiNaC::matrix(3, 1, GiNaC::lst{lit[0], lit[1], lit[2]});
+            out.push_back(vector_term{GiNaC::matrix(3, 1, GiNaC::lst{lit[0], lit[1], lit[2]}), 1});
     }
+    return out;
+}
+
+ex canonical(const ex& e) {
+    ex result = 0;
+    for (const auto& t : canonical_terms(e)) result += t.coefficient * t.monomial;
     return result;
 }
 

@@ -114,6 +114,17 @@ GiNaC::ex subs_components(const GiNaC::ex& e, const std::map<GiNaC::ex, GiNaC::e
 /// Canonical form (see above). Throws type_error on an ill-formed expression.
 GiNaC::ex canonical(const GiNaC::ex& e);
 
+/// One term of a canonical form: coefficient * monomial.
+struct vector_term {
+    GiNaC::ex monomial;     ///< a vector symbol, v_i x v_j (i < j by name), a literal; 1 for a scalar
+    GiNaC::ex coefficient;  ///< a scalar, normalized
+};
+/// The terms of canonical(e) in a fixed order: vector symbols by name, then
+/// cross products (by their factors' names), then one literal holding every
+/// literal contribution. A scalar e gives one term with monomial 1 (none if
+/// it is 0). canonical(e) is the sum of coefficient * monomial.
+std::vector<vector_term> canonical_terms(const GiNaC::ex& e);
+
 /// Exact equality of two vector (or two scalar) expressions by the component
 /// test. Comparing a vector with a scalar other than 0 throws type_error.
 bool equal(const GiNaC::ex& a, const GiNaC::ex& b);
