@@ -107,6 +107,10 @@ TEST_F(Vec, ComponentTestIsTheGroundTruth) {
     EXPECT_TRUE(equal(dot(w, r0) / dot(w, w), dot(r0, w) / pow(norm(w), 2)));
     EXPECT_FALSE(equal(dot(w, r0) / dot(w, w), dot(r0, w) / norm(w)));
     EXPECT_TRUE(equal(0, cross(w, w)));
+    // literals are not rotation-invariant: no normal position for them
+    EXPECT_FALSE(equal(sin(s) * cross(a, lit(1, 0, 0)), 0));
+    EXPECT_FALSE(equal(sin(s) * dot(a, lit(0, 1, 0)) * dot(b, lit(0, 0, 1)), 0));
+    EXPECT_TRUE(equal(sin(s) * cross(lit(1, 0, 0), lit(0, 1, 0)), sin(s) * lit(0, 0, 1)));
 }
 
 TEST_F(Vec, PerturbedIdentitiesDoNotVanish) {
@@ -278,4 +282,43 @@ TEST_F(Vec, CanonicalTermsInFixedOrder) {
     ASSERT_EQ(sc.size(), 1u);
     EXPECT_TRUE(sc[0].monomial.is_equal(1));
     EXPECT_TRUE(canonical_terms(cross(a, b) + cross(b, a)).empty());
+}
+
+// Identities with compound (random) arguments: canonical() may leave a
+// non-unique form (five vectors), equal() must decide them; perturbed by a
+// non-zero term they must not be equal.
+TEST_F(Vec, GeneratedIdentitiesWithCompoundArguments) {
+    const ex atoms[] = {a, b, c, d, w};
+    std::mt19937 g(777);
+    std::function<ex(int)> tree = [&](int depth) -> ex {
+        if (depth == 0 || g() % 3 == 0)
+            return atoms[g() % 5] * int(g() % 3 + 1) + (g() % 2 ? s * atoms[g() % 5] : ex(0));
+        return cross(tree(depth - 1), tree(depth - 1));
+    };
+    int canonical_zero = 0, checked = 0;
+    for (int k = 0; k < 8; ++k) {
+        const ex X = tree(2), Y = tree(2), Z = tree(1), U = tree(1);
+        const ex vec_ids[] = {cross(X, cross(Y, Z)) + cross(Y, cross(Z, X)) + cross(Z, cross(X, Y)),
+                              cross(X, cross(Y, Z)) - (dot(X, Z) * Y - dot(X, Y) * Z)};
+        const ex scal_ids[] = {dot(cross(X, Y), cross(Z, U)) - (dot(X, Z) * dot(Y, U) - dot(X, U) * dot(Y, Z)),
+                               triple(X, Y, Z) - triple(Y, Z, X), triple(X, Y, Z) + dot(Y, cross(X, Z))};
+        const bool x_nonzero = !canonical(X).is_zero();
+        for (const ex& e : vec_ids) {
+            EXPECT_TRUE(equal(e, 0)) << to_string(e);
+            canonical_zero += canonical(e).is_zero();
+            ++checked;
+            if (x_nonzero) {
+                EXPECT_FALSE(equal(e + u * X, 0)) << to_string(e);
+            }
+        }
+        for (const ex& e : scal_ids) {
+            EXPECT_TRUE(equal(e, 0)) << to_string(e);
+            canonical_zero += canonical(e).is_zero();
+            ++checked;
+            if (x_nonzero) {
+                EXPECT_FALSE(equal(e + u * dot(X, X), 0)) << to_string(e);
+            }
+        }
+    }
+    EXPECT_GT(canonical_zero, checked / 3);  // the fast path does most of the work
 }

@@ -489,13 +489,34 @@ ex subs_components(const ex& e, const exmap_less& m) {
 // ------------------------------------------------------------------ equality
 namespace {
 
+// True when e has a literal or a non-integer power (|w| = sqrt(w.w)).
+bool has_literal_or_root(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (is_a<GiNaC::matrix>(*it)) return true;
+        if (is_a<GiNaC::power>(*it) &&
+            !(is_a<GiNaC::numeric>(it->op(1)) && ex_to<GiNaC::numeric>(it->op(1)).is_integer()))
+            return true;
+    }
+    return false;
+}
+
 // The components of d (vector or scalar) with fresh symbols for the vectors.
+// Without literals, d is built from rotation-equivariant operations (sums,
+// scalar factors, cross, dot, triple), so d = 0 for all vectors iff d = 0 when
+// the first vector lies along e1 and the second in the e1-e2 plane (rotate any
+// configuration there): three fewer variables. Roots are excluded because
+// sqrt(x^2) is |x|, not x, which normal() would not cancel.
 std::vector<ex> symbolic_components(const ex& d) {
     exmap_less m;
+    const bool normal_position = !has_literal_or_root(d);
+    int k = 0;
     for (const ex& v : vector_symbols(d)) {
         const std::string n = name_of(v);
-        m[v] = GiNaC::matrix(3, 1, GiNaC::lst{GiNaC::realsymbol(n + "_1"), GiNaC::realsymbol(n + "_2"),
-                                              GiNaC::realsymbol(n + "_3")});
+        const ex x = GiNaC::realsymbol(n + "_1"), y = GiNaC::realsymbol(n + "_2"), z = GiNaC::realsymbol(n + "_3");
+        if (normal_position && k == 0) m[v] = GiNaC::matrix(3, 1, GiNaC::lst{x, 0, 0});
+        else if (normal_position && k == 1) m[v] = GiNaC::matrix(3, 1, GiNaC::lst{x, y, 0});
+        else m[v] = GiNaC::matrix(3, 1, GiNaC::lst{x, y, z});
+        ++k;
     }
     const ex c = subs_components(d, m);
     if (is_a<GiNaC::matrix>(c)) return {comp(c, 0), comp(c, 1), comp(c, 2)};

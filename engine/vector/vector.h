@@ -38,7 +38,9 @@
 // vectors ([a,b,c] d = (a.d) b x c + (b.d) c x a + (c.d) a x b), so it is used
 // for printing and as a fast zero test, while equal(a, b) decides equality
 // exactly: it substitutes fresh symbolic components for every abstract vector
-// in a - b and tests each component with GiNaC's normal(). That test is a
+// in a - b and tests each component with GiNaC's normal() (after two fast
+// paths: a random integer point that gives a non-zero rational proves a != b;
+// canonical(a - b) == 0 proves a == b; see docs/vectors.md). That test is a
 // decision procedure for rational expressions in the components; with other
 // functions (sin, exp, ...) of vector data it is only as strong as normal().
 #pragma once
