@@ -322,3 +322,15 @@ TEST_F(Vec, GeneratedIdentitiesWithCompoundArguments) {
     }
     EXPECT_GT(canonical_zero, checked / 3);  // the fast path does most of the work
 }
+
+// Thesis VI.1.21/28 with f = 0: r = phi0 r0 + w x (phi1 r0) + w x (w x (phi2 r0))
+// solves r' + w x r = 0, r(0) = r0.
+TEST_F(Vec, ThesisRotationSolutionSatisfiesItsProblem) {
+    GiNaC::realsymbol t("t");
+    const ex W = norm(w);
+    const ex phi0 = 1, phi1 = -sin(W * t) / W, phi2 = (1 - cos(W * t)) / pow(W, 2);
+    const ex r = phi0 * r0 + cross(w, phi1 * r0) + cross(w, cross(w, phi2 * r0));
+    EXPECT_TRUE(equal(diff_t(r, t) + cross(w, r), 0)) << to_string(canonical(diff_t(r, t) + cross(w, r)));
+    EXPECT_TRUE(equal(r.subs(t == 0), r0));
+    EXPECT_FALSE(equal(diff_t(r, t) - cross(w, r), 0));
+}
