@@ -245,6 +245,7 @@ TEST_F(Vec, BadInputIsATypedError) {
     EXPECT_THROW(vector_symbol(""), type_error);
     EXPECT_THROW(cross(w, GiNaC::matrix(2, 1, GiNaC::lst{1, 2})), type_error);
     EXPECT_THROW(vector_literal(w, 0, 0), type_error);
+    EXPECT_THROW(is_vector(GiNaC::matrix(3, 1, GiNaC::lst{w, 0, 0})), type_error);
 }
 
 // Thesis VI.1.49: the exact solution of r'' + 2 w x r' = g, r(0) = r0, r'(0) = v0.

@@ -118,7 +118,7 @@ ex derivative(const ex& r) {
     d.t = en->t;
     en->deriv = d.sym;
     en->has_deriv = true;
-    reg.emplace(dname, d);  // may invalidate nothing (std::map), en stays valid
+    reg.emplace(dname, d);  // std::map: en stays valid
     return reg.at(dname).sym;
 }
 
@@ -163,6 +163,9 @@ int kind(const ex& e) {
             throw type_error("a " + std::to_string(m.rows()) + "x" + std::to_string(m.cols()) +
                              " matrix is not a vector (vector literals are 3x1)");
         }
+        for (unsigned i = 0; i < 3; ++i)
+            if (kind(comp(e, i)))
+                throw type_error("a component of a vector literal must be a scalar: " + message_text(e));
         return 1;
     }
     if (is_cross(e)) return 1;
@@ -401,8 +404,9 @@ void check_map(const char* who, const exmap_less& m) {
     }
 }
 
-// Component evaluation. For a vector, c receives 3 components; for a scalar,
-// the return value is the scalar. `vec` says which.
+// Component evaluation with the vectors of m replaced by their components:
+// vec() for a vector expression (3 components), scal() for a scalar one.
+// Nothing is expanded here.
 struct components {
     const exmap_less& m;
 
@@ -442,7 +446,7 @@ struct components {
     }
 
     ex scal(const ex& e) {
-        if (vector_symbols(e).empty() && !has_literal(e)) return e;
+        if (!has_vector_data(e)) return e;
         if (is_dot(e)) {
             auto a = vec(e.op(0)), b = vec(e.op(1));
             return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -460,9 +464,9 @@ struct components {
         return e.map(f);
     }
 
-    static bool has_literal(const ex& e) {
+    static bool has_vector_data(const ex& e) {
         for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-            if (is_a<GiNaC::matrix>(*it)) return true;
+            if (is_a<GiNaC::matrix>(*it) || is_vector_symbol(*it)) return true;
         return false;
     }
 };
