@@ -66,23 +66,33 @@ std::string power_text(const ex& base, const ex& expo) {
 }
 
 
-// A product given as numeric coefficient and other factors (vector factor, if
-// any, is printed last among the numerator factors).
-std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& factors) {
+std::vector<std::string> add_terms(const ex& e);
+std::string join_terms(const std::vector<std::string>& terms);
+
+std::string toggle_sign(const std::string& t) { return t.rfind("-", 0) == 0 ? t.substr(1) : "-" + t; }
+
+// A product given as numeric coefficient and scalar factors, and the text of
+// the vector factor if any (printed last among the numerator factors). Each
+// factor is printed once (no exponential re-printing of nested sums).
+std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& factors, std::string vec = "") {
     std::vector<std::string> num, den;
-    std::string vec;
     GiNaC::numeric coef = coef_in;
     for (const ex& f : factors) {
-        // a sum (or an integer power of one) whose text starts with '-' is
-        // negated, so that the text does not depend on GiNaC's term order
-        const bool is_pw = is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
-                           ex_to<GiNaC::numeric>(f.op(1)).is_integer();
-        const ex base = is_pw ? f.op(0) : f;
-        if (is_a<GiNaC::add>(base) && !kind(base) && str(base).rfind("-", 0) == 0) {
-            // text only: GiNaC would restore its own sign choice in a power
-            const std::string t = "(" + str(GiNaC::expand(-base)) + ")";
-            GiNaC::numeric k = is_pw ? ex_to<GiNaC::numeric>(f.op(1)) : GiNaC::numeric(1);
-            if (k.is_odd()) coef = -coef;
+        const bool int_pw = is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
+                            ex_to<GiNaC::numeric>(f.op(1)).is_integer();
+        const ex base = int_pw ? f.op(0) : f;
+        if (is_a<GiNaC::add>(base) && !kind(base)) {
+            // a scalar sum (or an integer power of one) whose text starts with
+            // '-' is printed negated, so that the text does not depend on the
+            // sign GiNaC picks by its internal order (text only: GiNaC would
+            // restore its own choice in an expression)
+            std::vector<std::string> terms = add_terms(base);
+            GiNaC::numeric k = int_pw ? ex_to<GiNaC::numeric>(f.op(1)) : GiNaC::numeric(1);
+            if (!terms.empty() && terms[0].rfind("-", 0) == 0) {
+                for (auto& t : terms) t = toggle_sign(t);
+                if (k.is_odd()) coef = -coef;
+            }
+            const std::string t = "(" + join_terms(terms) + ")";
             const bool in_den = k.is_negative();
             if (in_den) k = -k;
             (in_den ? den : num).push_back(k.is_equal(1) ? t : t + "^" + ginac_text(k));
@@ -90,8 +100,7 @@ std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& f
         }
         if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
             ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
-            const ex inv = GiNaC::pow(f.op(0), -f.op(1));
-            den.push_back(factor_text(inv));
+            den.push_back(factor_text(GiNaC::pow(f.op(0), -f.op(1))));
         } else if (kind(f)) {
             vec = factor_text(f);
         } else {
@@ -124,13 +133,27 @@ std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& f
     return s;
 }
 
-std::string mul_text(const ex& e) {
-    GiNaC::numeric c = 1;
-    std::vector<ex> fs;
+// Splits a scalar into numeric coefficient and other factors.
+void split_numeric(const ex& e, GiNaC::numeric& c, std::vector<ex>& fs) {
+    c = 1;
+    if (is_a<GiNaC::numeric>(e)) {
+        c = ex_to<GiNaC::numeric>(e);
+        return;
+    }
+    if (!is_a<GiNaC::mul>(e)) {
+        fs.push_back(e);
+        return;
+    }
     for (std::size_t i = 0; i < e.nops(); ++i) {
         if (is_a<GiNaC::numeric>(e.op(i))) c *= ex_to<GiNaC::numeric>(e.op(i));
         else fs.push_back(e.op(i));
     }
+}
+
+std::string mul_text(const ex& e) {
+    GiNaC::numeric c;
+    std::vector<ex> fs;
+    split_numeric(e, c, fs);
     return product_text(c, fs);
 }
 
@@ -139,42 +162,63 @@ std::string term_text(const ex& t) {
     return (is_cross(t) || (is_dot(t) && !is_norm_sq(t))) ? "(" + str(t) + ")" : str(t);
 }
 
-std::string add_text(const ex& e) {
-    // group by vector monomial (text), scalar sums get the key ""
-    std::map<std::string, std::pair<ex, ex>> groups;  // vector text -> (monomial, coefficient)
+// The printed terms of a sum, in the fixed order: vector terms grouped by
+// their monomial (ordered by its text), then scalar terms by text without sign.
+std::vector<std::string> add_terms(const ex& e) {
+    struct group {
+        ex mon;
+        std::string text;  // the monomial, printed once
+        ex coef;
+    };
+    std::map<std::string, group> groups;
     std::vector<std::string> scalars;
     for (std::size_t i = 0; i < e.nops(); ++i) {
         const ex t = e.op(i);
         if (kind(t)) {
             const auto [s, v] = split_scalar(t);
-            const std::string k = str(v);
+            std::string k = str(v);
             auto it = groups.find(k);
-            if (it == groups.end()) groups.emplace(k, std::make_pair(v, s));
-            else it->second.second += s;
+            if (it == groups.end()) groups.emplace(k, group{v, k, s});
+            else it->second.coef += s;
         } else {
             scalars.push_back(term_text(t));
         }
     }
     std::vector<std::string> terms;
-    for (auto& [k, mc] : groups) {
-        const ex& c = mc.second;
+    for (auto& [k, g] : groups) {
+        const ex& c = g.coef;
         if (c.is_zero()) continue;
-        if (is_a<GiNaC::add>(c)) terms.push_back("(" + str(c) + ")*" + factor_text(mc.first));
-        else terms.push_back(term_text(c * mc.first));
+        const bool bare_product = is_cross(g.mon) || (is_dot(g.mon) && !is_norm_sq(g.mon));
+        const std::string vt = is_simple(g.mon) ? g.text : "(" + g.text + ")";
+        if (c.is_equal(1)) {
+            terms.push_back(bare_product ? "(" + g.text + ")" : g.text);
+        } else if (is_a<GiNaC::add>(c)) {
+            terms.push_back("(" + str(c) + ")*" + vt);
+        } else {
+            GiNaC::numeric cn;
+            std::vector<ex> fs;
+            split_numeric(c, cn, fs);
+            terms.push_back(product_text(cn, fs, vt));
+        }
     }
-    // scalar terms: sorted by text without sign
     std::sort(scalars.begin(), scalars.end(), [](const std::string& a, const std::string& b) {
         const std::string x = a.rfind("-", 0) == 0 ? a.substr(1) : a;
         const std::string y = b.rfind("-", 0) == 0 ? b.substr(1) : b;
         return x != y ? x < y : a < b;
     });
     terms.insert(terms.end(), scalars.begin(), scalars.end());
+    return terms;
+}
+
+std::string join_terms(const std::vector<std::string>& terms) {
     if (terms.empty()) return "0";
     std::string s = terms[0];
     for (std::size_t i = 1; i < terms.size(); ++i)
         s += terms[i].rfind("-", 0) == 0 ? " - " + terms[i].substr(1) : " + " + terms[i];
     return s;
 }
+
+std::string add_text(const ex& e) { return join_terms(add_terms(e)); }
 
 std::string str(const ex& e) {
     if (is_a<GiNaC::symbol>(e)) return ex_to<GiNaC::symbol>(e).get_name();
