@@ -42,6 +42,23 @@ TEST_F(Vec, RegistryReturnsTheSameSymbol) {
     EXPECT_TRUE(is_vector(2 * a + s * b));
     EXPECT_FALSE(is_vector(dot(a, b) * s));
     EXPECT_TRUE(is_vector(lit(1, 2, s)));
+    // symbols of an interpreter: two sessions, same name, different vectors
+    const GiNaC::realsymbol m1("m"), m2("m");
+    register_vector(m1);
+    register_vector(m2);
+    register_vector(m1);
+    EXPECT_TRUE(is_vector_symbol(m1));
+    EXPECT_TRUE(is_vector_symbol(m2));
+    EXPECT_FALSE(is_vector_symbol(GiNaC::realsymbol("m")));
+    EXPECT_FALSE(cross(m1, m2).is_zero());
+    EXPECT_FALSE(vector_symbol("m").is_equal(m1));
+    EXPECT_TRUE(vector_symbol("m").is_equal(vector_symbol("m")));
+    GiNaC::realsymbol t("t"), tau("tau");
+    const GiNaC::realsymbol q("q");
+    register_vector_function(q, t);
+    EXPECT_TRUE((diff_t(cross(w, q), t) - cross(w, derivative(q))).is_zero());
+    EXPECT_THROW(register_vector_function(q, tau), type_error);
+    EXPECT_THROW(vector_function("q'", t), type_error);
 }
 
 TEST_F(Vec, LinearityAndScalarExtraction) {

@@ -4,6 +4,7 @@
 #include "vector/vector.h"
 
 #include <algorithm>
+#include <list>
 #include <mutex>
 #include <random>
 
@@ -28,20 +29,30 @@ struct entry {
     bool has_deriv = false;
 };
 
+// name -> the registered symbols of that name; the first one is the symbol
+// vector_symbol(name) returns. Several symbols may share a name (e.g. one per
+// interpreter session); they are different vectors. std::list: entries stay put.
+struct name_entries {
+    std::list<entry> list;
+    bool has_primary = false;  // list.front() was made by vector_symbol()
+};
+
 std::mutex& reg_mutex() {
     static std::mutex m;
     return m;
 }
-std::map<std::string, entry>& registry() {
-    static std::map<std::string, entry> r;
+std::map<std::string, name_entries>& registry() {
+    static std::map<std::string, name_entries> r;
     return r;
 }
 
-void check_name(const std::string& name) {
-    if (name.empty()) throw type_error("vector_symbol: the name of a vector must not be empty");
+void check_name(const char* who, const std::string& name) {
+    if (name.empty()) throw type_error(std::string(who) + ": the name of a vector must not be empty");
     for (char c : name)
-        if (c == ' ' || c == '\t' || c == '\n' || c == '(' || c == ')' || c == '[' || c == ']' || c == ',')
-            throw type_error("vector_symbol: invalid character in the vector name '" + name + "'");
+        if (c == ' ' || c == '\t' || c == '\n' || c == '(' || c == ')' || c == '[' || c == ']' || c == ',' ||
+            c == '\'')
+            throw type_error(std::string(who) + ": invalid character in the vector name '" + name +
+                             "' (' is reserved for derivatives)");
 }
 
 // Registry lookup: the entry of the vector symbol e, or nullptr. Caller holds the lock.
@@ -49,39 +60,56 @@ entry* find_entry(const ex& e) {
     if (!is_a<GiNaC::symbol>(e)) return nullptr;
     auto& r = registry();
     auto it = r.find(ex_to<GiNaC::symbol>(e).get_name());
-    if (it == r.end() || !it->second.sym.is_equal(e)) return nullptr;
-    return &it->second;
+    if (it == r.end()) return nullptr;
+    for (entry& en : it->second.list)
+        if (en.sym.is_equal(e)) return &en;
+    return nullptr;
+}
+
+// Adds sym (not yet registered) to the registry. Caller holds the lock.
+entry& add_entry(const ex& sym, bool primary) {
+    auto& ne = registry()[ex_to<GiNaC::symbol>(sym).get_name()];
+    entry en;
+    en.sym = sym;
+    if (primary) {
+        ne.list.push_front(en);
+        ne.has_primary = true;
+        return ne.list.front();
+    }
+    ne.list.push_back(en);
+    return ne.list.back();
+}
+
+void make_timed(entry& en, const ex& t, const char* who) {
+    const std::string name = ex_to<GiNaC::symbol>(en.sym).get_name();
+    if (en.timed) {
+        if (!en.t.is_equal(t))
+            throw type_error(std::string(who) + ": '" + name + "' already depends on another variable");
+        return;
+    }
+    if (name.find('\'') != std::string::npos)
+        throw type_error(std::string(who) + ": '" + name + "' is a derivative symbol");
+    en.timed = true;
+    en.t = t;
 }
 
 }  // namespace
 
 ex vector_symbol(const std::string& name) {
-    check_name(name);
+    check_name("vector_symbol", name);
     std::lock_guard<std::mutex> lock(reg_mutex());
     auto& r = registry();
     auto it = r.find(name);
-    if (it != r.end()) return it->second.sym;
-    entry en;
-    en.sym = GiNaC::realsymbol(name);
-    r.emplace(name, en);
-    return en.sym;
+    if (it != r.end() && it->second.has_primary) return it->second.list.front().sym;
+    return add_entry(GiNaC::realsymbol(name), true).sym;
 }
 
 void register_vector(const ex& sym) {
     if (!is_a<GiNaC::symbol>(sym))
         throw type_error("register_vector: " + message_text(sym) + " is not a symbol");
-    const std::string name = ex_to<GiNaC::symbol>(sym).get_name();
-    check_name(name);
+    check_name("register_vector", ex_to<GiNaC::symbol>(sym).get_name());
     std::lock_guard<std::mutex> lock(reg_mutex());
-    auto& r = registry();
-    auto it = r.find(name);
-    if (it != r.end()) {
-        if (it->second.sym.is_equal(sym)) return;
-        throw type_error("register_vector: another symbol named '" + name + "' is already a vector");
-    }
-    entry en;
-    en.sym = sym;
-    r.emplace(name, en);
+    if (!find_entry(sym)) add_entry(sym, false);
 }
 
 ex vector_function(const std::string& name, const ex& t) {
@@ -89,17 +117,16 @@ ex vector_function(const std::string& name, const ex& t) {
         throw type_error("vector_function: the variable " + message_text(t) + " is not a symbol");
     const ex r = vector_symbol(name);
     std::lock_guard<std::mutex> lock(reg_mutex());
-    entry* en = find_entry(r);
-    if (en->timed) {
-        if (!en->t.is_equal(t))
-            throw type_error("vector_function: '" + name + "' already depends on another variable");
-        return r;
-    }
-    if (en->has_deriv || name.find('\'') != std::string::npos)
-        throw type_error("vector_function: '" + name + "' is already a constant vector or a derivative");
-    en->timed = true;
-    en->t = t;
+    make_timed(*find_entry(r), t, "vector_function");
     return r;
+}
+
+void register_vector_function(const ex& sym, const ex& t) {
+    if (!is_a<GiNaC::symbol>(t))
+        throw type_error("register_vector_function: the variable " + message_text(t) + " is not a symbol");
+    register_vector(sym);
+    std::lock_guard<std::mutex> lock(reg_mutex());
+    make_timed(*find_entry(sym), t, "register_vector_function");
 }
 
 ex derivative(const ex& r) {
@@ -108,18 +135,12 @@ ex derivative(const ex& r) {
     if (!en || !en->timed)
         throw type_error("derivative: " + message_text(r) + " is not a vector function (declare it with vector_function)");
     if (en->has_deriv) return en->deriv;
-    const std::string dname = ex_to<GiNaC::symbol>(r).get_name() + "'";
-    auto& reg = registry();
-    if (reg.count(dname))
-        throw type_error("derivative: the name '" + dname + "' is already taken by another vector");
-    entry d;
-    d.sym = GiNaC::realsymbol(dname);
+    entry& d = add_entry(GiNaC::realsymbol(ex_to<GiNaC::symbol>(r).get_name() + "'"), false);
     d.timed = true;
     d.t = en->t;
     en->deriv = d.sym;
     en->has_deriv = true;
-    reg.emplace(dname, d);  // std::map: en stays valid
-    return reg.at(dname).sym;
+    return d.sym;
 }
 
 bool is_vector_symbol(const ex& e) {

@@ -60,15 +60,20 @@ DECLARE_FUNCTION_3P(vtriple)
 
 // ---------------------------------------------------------------- registry
 /// The vector symbol named `name`: created as a realsymbol and registered on
-/// first use, the same symbol afterwards. Throws type_error on an empty or
-/// malformed name.
+/// first use, the same symbol afterwards. Throws type_error on an empty name
+/// or one with a blank, a comma, a bracket or ' (reserved for derivatives).
 GiNaC::ex vector_symbol(const std::string& name);
-/// Marks an existing GiNaC symbol as a vector (a no-op if it already is).
-/// Throws type_error if another symbol of the same name is already a vector.
+/// Marks an existing GiNaC symbol (e.g. an interpreter's realsymbol) as a
+/// vector; a no-op if it already is. Several symbols may carry the same name
+/// (one per interpreter session, say): they are different vectors, and
+/// vector_symbol(name) keeps returning its own one.
 void register_vector(const GiNaC::ex& sym);
 /// A vector symbol r depending on the real symbol t (see derivative()).
-/// Throws type_error if r is already registered with another dependence.
+/// Throws type_error if r already depends on another variable or its name
+/// contains ' (reserved for derivative symbols).
 GiNaC::ex vector_function(const std::string& name, const GiNaC::ex& t);
+/// register_vector(sym) and declares it a function of t (as vector_function).
+void register_vector_function(const GiNaC::ex& sym, const GiNaC::ex& t);
 /// The derivative symbol of a time-dependent vector symbol: r -> r', r' -> r''.
 /// Throws type_error if r is not a vector function.
 GiNaC::ex derivative(const GiNaC::ex& r);
