@@ -137,7 +137,7 @@ std::vector<vector_term> canonical_terms(const GiNaC::ex& e);
 bool equal(const GiNaC::ex& a, const GiNaC::ex& b);
 
 /// Text in the thesis notation, deterministic (independent of GiNaC's term
-/// order and of symbol creation order): w x (w x r0), w . r0, |w|, [a, b, c],
+/// order and of symbol creation order): a x (b x c), a . b, |w|, |w|^2, [a, b, c],
 /// [1, 0, t] for a literal; products with '*', quotients with '/'.
 std::string to_string(const GiNaC::ex& e);
 
