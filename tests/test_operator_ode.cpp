@@ -258,3 +258,23 @@ TEST(OperatorOde, VerifyDetectsWrongSolutions) {
     bad.terms[1].c[0] = bad.terms[1].c[0] + qp(ex(1));  // wrong v0 part at t = 0
     EXPECT_FALSE(verify(ode, R, bad).initial_ok);
 }
+
+TEST(OperatorOde, ProjectorFormAndPolynomialInput) {
+    // (26) without forcing in the projector form of Thm VI.1.3.3.1 / VI.1.81:
+    // e^{-Kt} = P0 - (sin W t / W) K + cos(W t) P1
+    const rotation_operator_algebra R(W);
+    const GiNaC::symbol K("K");
+    operator_ode ode;
+    ode.A = {operator_polynomial_from(K, K), operator_polynomial_from(ex(1), K)};
+    ode.initial = {"r0"};
+    const operator_solution s = solve(ode, R, t);
+    const auto pf = R.projector_form(s.of("r0").c);
+    EXPECT_TRUE(same_function(pf[0].to_ex(), 1));
+    EXPECT_TRUE(same_function(pf[1].to_ex(), -GiNaC::sin(W * t) / W));
+    EXPECT_TRUE(same_function(pf[2].to_ex(), GiNaC::cos(W * t)));
+    const operator_polynomial p = operator_polynomial_from(GiNaC::pow(K + 1, 2) + w0 * w0, K);
+    ASSERT_EQ(p.size(), 3u);
+    EXPECT_TRUE(is_zero_scalar(p[0] - (1 + w0 * w0)));
+    EXPECT_TRUE(is_zero_scalar(p[1] - 2));
+    EXPECT_THROW(operator_polynomial_from(1 / K, K), domain_error);
+}

@@ -151,3 +151,19 @@ TEST(QuasiPolynomial, ExpConvolvedWithItselfVI_1_37) {
         EXPECT_TRUE((convolution(e, e) - te).is_zero()) << lam.re << " + i " << lam.im;
     }
 }
+
+TEST(QuasiPolynomial, GenericReadingAndItsExactSpecialCase) {
+    // int_0^t e^{a t} cos(b t) has 1/(a^2 + b^2): generic in a, b
+    const GiNaC::realsymbol a("a"), b("b");
+    const quasi_polynomial F =
+        quasi_polynomial::from_ex(GiNaC::exp(a * t) * GiNaC::cos(b * t), t).antiderivative();
+    // a = 0 alone is fine (b generic)
+    const quasi_polynomial F0 = F.subs(a, 0);
+    EXPECT_TRUE(same_function(F0.to_ex(), GiNaC::sin(b * t) / b));
+    // a = b = 0 is excluded by the generic reading: a typed error, not a crash
+    EXPECT_THROW(F0.subs(b, 0), domain_error);
+    // the specialized integrand takes the exact branch lambda = 0
+    EXPECT_TRUE(same_function(quasi_polynomial::from_ex(ex(1), t).antiderivative().to_ex(), t));
+    EXPECT_THROW(quasi_polynomial::from_ex(GiNaC::pow(1 + t, 100000), t), size_error);
+    EXPECT_THROW(quasi_polynomial::from_ex(t, GiNaC::ex(2)), domain_error);
+}

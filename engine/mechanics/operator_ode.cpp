@@ -268,6 +268,16 @@ quasi_polynomial impulse_response(const std::vector<cex>& a, const ex& t) {
     return y;
 }
 
+operator_polynomial operator_polynomial_from(const ex& p, const GiNaC::symbol& K) {
+    const ex e = GiNaC::expand(p);
+    if (!e.is_polynomial(K))
+        throw domain_error("operator polynomial: " + str(p) + " is not a polynomial in " + str(K));
+    const int d = e.degree(K);
+    operator_polynomial a;
+    for (int j = 0; j <= d; ++j) a.push_back(tidy(e.coeff(K, j)));
+    return a;
+}
+
 const placeholder_coefficients& operator_solution::of(const std::string& name) const {
     for (const auto& p : terms)
         if (p.vector == name) return p;

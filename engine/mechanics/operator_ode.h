@@ -56,6 +56,10 @@ namespace symrep::mechanics {
 /// K^3 = -Omega^2 K where needed). Coefficients must not depend on t.
 using operator_polynomial = std::vector<GiNaC::ex>;
 
+/// The coefficients of a polynomial p in the symbol K (p = A(K) as an expression,
+/// e.g. K^2 + w0^2). Throws domain_error when p is not a polynomial in K.
+operator_polynomial operator_polynomial_from(const GiNaC::ex& p, const GiNaC::symbol& K);
+
 /// q(t) K^power F, F a constant vector known by name.
 struct forcing_term {
     quasi_polynomial q;

@@ -65,6 +65,8 @@ bool contains(const ex& e, const ex& t) { return e.has(t); }
 
 std::string str(const ex& e) { return message_text(e); }
 
+constexpr long max_power = 4096;
+
 }  // namespace
 
 bool is_zero_cex(const cex& z) { return is_zero_scalar(z.re) && is_zero_scalar(z.im); }
@@ -142,9 +144,13 @@ quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
         const ex n = e.op(1);
         if (!contains(n, t) && GiNaC::is_a<GiNaC::numeric>(n) &&
             GiNaC::ex_to<GiNaC::numeric>(n).is_nonneg_integer()) {
+            const GiNaC::numeric nn = GiNaC::ex_to<GiNaC::numeric>(n);
+            if (nn > GiNaC::numeric(max_power))
+                throw size_error("quasi-polynomial: the power " + str(e) + " exceeds the limit " +
+                                 std::to_string(max_power) + " on exponents expanded here");
             const quasi_polynomial b = from_ex(e.op(0), t);
             quasi_polynomial r = constant(1, t);
-            for (long i = 0; i < GiNaC::ex_to<GiNaC::numeric>(n).to_long(); ++i) r = r * b;
+            for (long i = 0; i < nn.to_long(); ++i) r = r * b;
             return r;
         }
         throw domain_error("not a quasi-polynomial in " + str(t) + ": the power " + str(e) +
@@ -297,8 +303,17 @@ quasi_polynomial quasi_polynomial::subs(const ex& sym, const ex& s) const {
     quasi_polynomial r = *this;
     r.terms_.clear();
     auto sb = [&](const ex& e) { return tidy(e.subs(sym == s)); };
-    for (const auto& u : terms_)
-        r.add_term({{sb(u.c.re), sb(u.c.im)}, u.k, {sb(u.lambda.re), sb(u.lambda.im)}});
+    try {
+        for (const auto& u : terms_)
+            r.add_term({{sb(u.c.re), sb(u.c.im)}, u.k, {sb(u.lambda.re), sb(u.lambda.im)}});
+    } catch (const symrep::error&) {
+        throw;
+    } catch (const std::exception& e) {
+        // e.g. 1/(a^2 + b^2) at a = b = 0: a value excluded by the generic reading
+        throw domain_error("quasi_polynomial::subs: " + str(sym) + " = " + str(s) +
+                           " is a value excluded by the generic reading of this closed form (" +
+                           e.what() + "); rebuild it from the specialized integrand instead");
+    }
     return r;
 }
 

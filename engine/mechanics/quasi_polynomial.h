@@ -66,7 +66,8 @@ public:
     /// non-negative integer powers, exp, cos, sin, cosh, sinh of arguments
     /// linear in t (alpha t + beta, beta allowed: cos(b t + phi) is expanded).
     /// Throws domain_error naming the offending sub-expression otherwise
-    /// (1/t, t^(1/2), exp(t^2), log(t), cos(t)/t, ...).
+    /// (1/t, t^(1/2), exp(t^2), log(t), cos(t)/t, ...), size_error for an
+    /// integer power above 4096 of an expression in t.
     static quasi_polynomial from_ex(const GiNaC::ex& e, const GiNaC::ex& t);
 
     /// The variable t (kept as an ex, so that a realsymbol is not sliced).
@@ -91,7 +92,10 @@ public:
     quasi_polynomial derivative() const;
     /// int_0^t f(tau) dtau, closed form (see the generic reading above).
     quasi_polynomial antiderivative() const;
-    /// Substitutes s for a symbol in every c, a, b (s must not contain t).
+    /// Substitutes s for a symbol in every c, a, b (s must not contain t). Throws
+    /// domain_error when the value is excluded by the generic reading (a closed
+    /// form with 1/(a^2 + b^2) at a = b = 0): build the quasi-polynomial from the
+    /// specialized integrand instead, which takes the exact lambda = 0 branch.
     quasi_polynomial subs(const GiNaC::ex& sym, const GiNaC::ex& s) const;
 
     quasi_polynomial operator-() const;

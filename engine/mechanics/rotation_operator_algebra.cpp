@@ -75,6 +75,12 @@ std::array<quasi_polynomial, 3> rotation_operator_algebra::recombine(const quasi
     return {axial, (1 / Omega_) * planar.imag(), (1 / (Omega_ * Omega_)) * (axial - planar.real())};
 }
 
+std::array<quasi_polynomial, 3> rotation_operator_algebra::projector_form(
+    const std::array<quasi_polynomial, 3>& c) const {
+    require_split("projector_form");
+    return {c[0], c[1], c[0] - (Omega_ * Omega_) * c[2]};
+}
+
 cex rotation_operator_algebra::at_i_omega(const std::vector<ex>& a) const {
     cex r(ex(0), ex(0)), p(ex(1), ex(0));
     const cex iw(ex(0), Omega_);

@@ -71,6 +71,10 @@ public:
     /// c0, c1, c2 from the axial (real) and planar (complex) solutions.
     std::array<quasi_polynomial, 3> recombine(const quasi_polynomial& axial,
                                               const quasi_polynomial& planar) const;
+    /// Projector form of c0 + c1 K + c2 K^2 = a P0 + b K + c P1 (Thm VI.1.3.3.1,
+    /// VI.1.81): a = c0, b = c1, c = c0 - Omega^2 c2. In vector terms
+    /// P0 x = (w.x) w / |w|^2 and P1 x = -w x (w x x) / |w|^2. Not when degenerate().
+    std::array<quasi_polynomial, 3> projector_form(const std::array<quasi_polynomial, 3>& c) const;
     /// Value of the scalar polynomial sum_j a[j] X^j at X = i Omega.
     cex at_i_omega(const std::vector<GiNaC::ex>& a) const;
 
