@@ -278,3 +278,21 @@ TEST(OperatorOde, ProjectorFormAndPolynomialInput) {
     EXPECT_TRUE(is_zero_scalar(p[1] - 2));
     EXPECT_THROW(operator_polynomial_from(1 / K, K), domain_error);
 }
+
+TEST(OperatorOde, CoriolisGravityVI_1_49) {
+    // r'' + 2 w x r' = g: VI.1.49 holds as printed; in powers of K (v0 x w = -K v0,
+    // (w.g) w = W^2 g + K^2 g)
+    const rotation_operator_algebra R(W);
+    operator_ode ode;
+    ode.A = {{0}, {0, 2}, {1}};
+    ode.initial = {"r0", "v0"};
+    ode.forcing = {{quasi_polynomial::constant(1, t), 0, "g"}};
+    const operator_solution s = solve(ode, R, t);
+    EXPECT_TRUE(verify(ode, R, s));
+    const ex S = GiNaC::sin(2 * W * t), C = GiNaC::cos(2 * W * t);
+    expect_coefficients(s, "r0", R.one());
+    expect_coefficients(s, "v0", R.make(t, -(1 - C) / (2 * W * W), -(S - 2 * W * t) / (2 * GiNaC::pow(W, 3))));
+    const ex a = (1 - C) / (4 * W * W), b = (S - 2 * W * t) / (4 * GiNaC::pow(W, 3)),
+             c = (2 * W * W * t * t + C - 1) / (4 * GiNaC::pow(W, 4));
+    expect_coefficients(s, "g", R.make(a + W * W * c, b, c));
+}
