@@ -2,6 +2,7 @@
 // (engine/mechanics/operator_ode.h): thesis VI.1.26-38, 56-57 (corrected), 68-81.
 #include <array>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include <Eigen/Dense>
@@ -198,46 +199,50 @@ TEST(OperatorOde, BadInputThrows) {
 
 TEST(OperatorOde, NumericAgainstOdeint) {
     // r'' + 2 W r' + W^2 r + w0^2 r = F cos(2 t) + G e^{-t/2} (W the skew matrix of w), compared
-    // with runge_kutta_dopri5 (abs/rel 1e-12 per step); agreement required to 1e-8
+    // with runge_kutta_dopri5 (abs/rel 1e-12 per step); agreement required to 1e-8;
+    // three random draws of w, r0, v0, F, G in [-1, 1]^3
     const rotation_operator_algebra R(W);
     operator_ode ode;
     ode.A = {{w0 * w0, 0, 1}, {0, 2}, {1}};
     ode.initial = {"r0", "v0"};
     ode.forcing = {{qp(GiNaC::cos(2 * t)), 0, "F"}, {qp(GiNaC::exp(-t / 2)), 0, "G"}};
     const operator_solution s = solve(ode, R, t);
-    std::mt19937 gen(12345);
-    std::uniform_real_distribution<double> U(-1.0, 1.0);
-    using vec = Eigen::Vector3d;
-    const vec w(U(gen), U(gen), U(gen)), r0(U(gen), U(gen), U(gen)), v0(U(gen), U(gen), U(gen)),
-        F(U(gen), U(gen), U(gen)), G(U(gen), U(gen), U(gen));
-    const double w0v = 1.3;
-    Eigen::Matrix3d Wm;
-    Wm << 0, -w(2), w(1), w(2), 0, -w(0), -w(1), w(0), 0;
-    const std::map<std::string, vec> vecs{{"r0", r0}, {"v0", v0}, {"F", F}, {"G", G}};
-    using state = std::array<double, 6>;
-    auto rhs = [&](const state& x, state& dx, double tt) {
-        const vec r(x[0], x[1], x[2]), v(x[3], x[4], x[5]);
-        const vec a = -2 * Wm * v - Wm * Wm * r - w0v * w0v * r + F * std::cos(2 * tt) + G * std::exp(-tt / 2);
-        for (int i = 0; i < 3; ++i) { dx[i] = v(i); dx[3 + i] = a(i); }
-    };
-    GiNaC::exmap num{{W, w.norm()}, {w0, w0v}};
-    for (double tv : {0.4, 1.7, 4.0}) {
-        state x{r0(0), r0(1), r0(2), v0(0), v0(1), v0(2)};
-        boost::numeric::odeint::integrate_adaptive(
-            boost::numeric::odeint::make_controlled<boost::numeric::odeint::runge_kutta_dopri5<state>>(1e-12, 1e-12),
-            rhs, x, 0.0, tv, 0.01);
-        num[t] = tv;
-        vec r = vec::Zero();
-        for (const auto& P : s.terms) {
-            vec Wk = vecs.at(P.vector);
-            for (unsigned k = 0; k < 3; ++k) {
-                const ex c = GiNaC::evalf(P.c[k].to_ex().subs(num));
-                ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(c)) << c;
-                r += GiNaC::ex_to<GiNaC::numeric>(c).to_double() * Wk;
-                Wk = Wm * Wk;
+    for (unsigned seed : {12345u, 7u, 2026u}) {
+        std::mt19937 gen(seed);
+        std::uniform_real_distribution<double> U(-1.0, 1.0);
+        using vec = Eigen::Vector3d;
+        const vec w(U(gen), U(gen), U(gen)), r0(U(gen), U(gen), U(gen)), v0(U(gen), U(gen), U(gen)),
+            F(U(gen), U(gen), U(gen)), G(U(gen), U(gen), U(gen));
+        const double w0v = 1.3;
+        Eigen::Matrix3d Wm;
+        Wm << 0, -w(2), w(1), w(2), 0, -w(0), -w(1), w(0), 0;
+        const std::map<std::string, vec> vecs{{"r0", r0}, {"v0", v0}, {"F", F}, {"G", G}};
+        using state = std::array<double, 6>;
+        auto rhs = [&](const state& x, state& dx, double tt) {
+            const vec r(x[0], x[1], x[2]), v(x[3], x[4], x[5]);
+            const vec a = -2 * Wm * v - Wm * Wm * r - w0v * w0v * r + F * std::cos(2 * tt) + G * std::exp(-tt / 2);
+            for (int i = 0; i < 3; ++i) { dx[i] = v(i); dx[3 + i] = a(i); }
+        };
+        GiNaC::exmap num{{W, w.norm()}, {w0, w0v}};
+        for (double tv : {0.4, 1.7, 4.0}) {
+            state x{r0(0), r0(1), r0(2), v0(0), v0(1), v0(2)};
+            boost::numeric::odeint::integrate_adaptive(
+                boost::numeric::odeint::make_controlled<boost::numeric::odeint::runge_kutta_dopri5<state>>(1e-12, 1e-12),
+                rhs, x, 0.0, tv, 0.01);
+            num[t] = tv;
+            vec r = vec::Zero();
+            for (const auto& P : s.terms) {
+                vec Wk = vecs.at(P.vector);
+                for (unsigned k = 0; k < 3; ++k) {
+                    const ex c = GiNaC::evalf(P.c[k].to_ex().subs(num));
+                    ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(c)) << c;
+                    r += GiNaC::ex_to<GiNaC::numeric>(c).to_double() * Wk;
+                    Wk = Wm * Wk;
+                }
             }
+            for (int i = 0; i < 3; ++i)
+                EXPECT_NEAR(r(i), x[i], 1e-8) << "seed " << seed << " t = " << tv << " component " << i;
         }
-        for (int i = 0; i < 3; ++i) EXPECT_NEAR(r(i), x[i], 1e-8) << "t = " << tv << " component " << i;
     }
 }
 
