@@ -1,0 +1,450 @@
+// symrep/mechanics/operator_ode.cpp -- the solver of operator_ode.h.
+#include "mechanics/operator_ode.h"
+
+#include <map>
+
+#include "algebra/exact_linear.h"
+#include "algebra/scalar.h"
+#include "io/error.h"
+
+namespace symrep::mechanics {
+
+using GiNaC::ex;
+
+namespace {
+
+std::string str(const ex& e) { return message_text(e); }
+
+// Replaces non-rational atoms (functions, constants such as Pi, non-integer
+// powers) by temporary symbols so that factor() sees a polynomial over Q(symbols).
+ex atomize(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back) {
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e)) return e;
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
+        (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())) {
+        GiNaC::exvector ops;
+        for (std::size_t i = 0; i < e.nops(); ++i) ops.push_back(atomize(e.op(i), seen, back));
+        if (GiNaC::is_a<GiNaC::add>(e)) return GiNaC::add(ops);
+        if (GiNaC::is_a<GiNaC::mul>(e)) return GiNaC::mul(ops);
+        return GiNaC::pow(ops[0], ops[1]);
+    }
+    auto it = seen.find(e);
+    if (it != seen.end()) return it->second;
+    const GiNaC::symbol s;
+    seen.emplace(e, s);
+    back[s] = e;
+    return s;
+}
+
+std::vector<std::pair<ex, unsigned>> factors_of(const ex& f) {
+    std::vector<std::pair<ex, unsigned>> out;
+    auto take = [&](const ex& u) {
+        if (GiNaC::is_a<GiNaC::power>(u) && GiNaC::is_a<GiNaC::numeric>(u.op(1)) &&
+            GiNaC::ex_to<GiNaC::numeric>(u.op(1)).is_pos_integer())
+            out.emplace_back(u.op(0), GiNaC::ex_to<GiNaC::numeric>(u.op(1)).to_int());
+        else
+            out.emplace_back(u, 1u);
+    };
+    if (GiNaC::is_a<GiNaC::mul>(f))
+        for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i));
+    else
+        take(f);
+    return out;
+}
+
+// sqrt of a polynomial, exact on its square factors: sqrt(4 (w0 - W)^2) = 2 (w0 - W)
+// (up to a sign, which does not matter for a root pair).
+ex sqrt_poly(const ex& e) {
+    GiNaC::exmap back;
+    std::map<ex, ex, GiNaC::ex_is_less> seen;
+    const ex f = GiNaC::factor(GiNaC::expand(atomize(GiNaC::expand(e), seen, back)));
+    ex out = 1, rest = 1;
+    for (const auto& [b, m] : factors_of(f)) {
+        if (GiNaC::is_a<GiNaC::numeric>(b)) {
+            out *= GiNaC::sqrt(GiNaC::pow(b, m));
+            continue;
+        }
+        out *= GiNaC::pow(b, m / 2);
+        if (m % 2) rest *= b;
+    }
+    return (out * GiNaC::sqrt(rest)).subs(back);
+}
+
+ex exact_sqrt(const ex& e) {
+    const ex n = GiNaC::normal(e);
+    return tidy(sqrt_poly(GiNaC::numer(n)) / sqrt_poly(GiNaC::denom(n)));
+}
+
+bool has_symbols(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
+    return false;
+}
+
+// +1, -1, 0, or 2 when undecidable; generic reading as in algebra/functions.cpp.
+int sign_of(const ex& x) {
+    const ex e = tidy(x);
+    if (e.is_zero()) return 0;
+    if (e.info(GiNaC::info_flags::positive)) return 1;
+    if (e.info(GiNaC::info_flags::negative)) return -1;
+    if (!has_symbols(e)) {
+        const ex v = GiNaC::evalf(e);
+        if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+            if (GiNaC::ex_to<GiNaC::numeric>(v).is_positive()) return 1;
+            if (GiNaC::ex_to<GiNaC::numeric>(v).is_negative()) return -1;
+        }
+        return 2;
+    }
+    if (e.info(GiNaC::info_flags::nonnegative)) return 1;
+    if ((-e).info(GiNaC::info_flags::nonnegative)) return -1;
+    return 2;
+}
+
+bool has_radical(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+            !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer())
+            return true;
+    return false;
+}
+
+// Sign of a discriminant: as sign_of, and a (minus a) perfect square of a
+// non-zero expression such as -4 (w0 - W)^2 is read as negative (generic reading).
+int discriminant_sign(const ex& disc) {
+    const int s = sign_of(disc);
+    if (s != 2) return s;
+    if (!has_radical(exact_sqrt(-disc))) return -1;
+    if (!has_radical(exact_sqrt(disc))) return 1;
+    return 2;
+}
+
+cex eval_poly(const std::vector<cex>& a, const cex& z) {
+    cex r(ex(0), ex(0));
+    for (std::size_t m = a.size(); m-- > 0;) r = tidy_cex(r * z + a[m]);
+    return r;
+}
+
+std::vector<cex> derivative_poly(const std::vector<cex>& a) {
+    std::vector<cex> d;
+    for (std::size_t m = 1; m < a.size(); ++m) d.push_back(ex(long(m)) * a[m]);
+    return d;
+}
+
+std::string poly_text(const std::vector<cex>& a) {
+    const GiNaC::symbol s("s");
+    ex p = 0;
+    for (std::size_t m = 0; m < a.size(); ++m) p += (a[m].re + GiNaC::I * a[m].im) * GiNaC::pow(s, int(m));
+    return str(p);
+}
+
+long falling(long k, long j) {
+    long r = 1;
+    for (long i = 0; i < j; ++i) r *= (k - i);
+    return r;
+}
+
+quasi_polynomial nth_derivative(quasi_polynomial q, unsigned n) {
+    for (unsigned i = 0; i < n; ++i) q = q.derivative();
+    return q;
+}
+
+}  // namespace
+
+std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a) {
+    if (a.empty() || is_zero_cex(a.back()))
+        throw domain_error("characteristic polynomial " + poly_text(a) +
+                           ": the leading coefficient is zero");
+    const std::size_t M = a.size() - 1;
+    if (M == 0) return {};
+    std::vector<cex> candidates;
+    if (M == 1) {
+        candidates.push_back(-1 * (a[0] * inverse_cex(a[1], "a characteristic root")));
+    } else {
+        const GiNaC::symbol s("s");
+        ex Pr = 0, Pi = 0;
+        bool real = true;
+        for (std::size_t m = 0; m <= M; ++m) {
+            Pr += a[m].re * GiNaC::pow(s, int(m));
+            Pi += a[m].im * GiNaC::pow(s, int(m));
+            if (!is_zero_scalar(a[m].im)) real = false;
+        }
+        const ex N = real ? Pr : Pr * Pr + Pi * Pi;
+        GiNaC::exmap back;
+        std::map<ex, ex, GiNaC::ex_is_less> seen;
+        const ex Na = atomize(GiNaC::expand(N), seen, back);
+        const ex fq = GiNaC::factor(GiNaC::expand(GiNaC::numer(GiNaC::normal(Na))));
+        for (const auto& [f0, mult] : factors_of(fq)) {
+            (void)mult;
+            const ex fr = GiNaC::expand(f0.subs(back));
+            if (!fr.has(s)) continue;
+            const int d = fr.degree(s);
+            if (d == 1) {
+                candidates.push_back({tidy(-fr.coeff(s, 0) / fr.coeff(s, 1)), ex(0)});
+            } else if (d == 2) {
+                const ex c2 = fr.coeff(s, 2), c1 = fr.coeff(s, 1), c0 = fr.coeff(s, 0);
+                const ex disc = tidy(c1 * c1 - 4 * c2 * c0), re = tidy(-c1 / (2 * c2));
+                switch (discriminant_sign(disc)) {
+                    case 0: candidates.push_back({re, ex(0)}); break;
+                    case 1: {
+                        const ex r = tidy(exact_sqrt(disc) / (2 * c2));
+                        candidates.push_back({tidy(re + r), ex(0)});
+                        candidates.push_back({tidy(re - r), ex(0)});
+                        break;
+                    }
+                    case -1: {
+                        const ex r = tidy(exact_sqrt(-disc) / (2 * c2));
+                        candidates.push_back({re, r});
+                        candidates.push_back({re, tidy(-r)});
+                        break;
+                    }
+                    default:
+                        throw closed_form_error("characteristic polynomial " + poly_text(a) +
+                                                ": the sign of the discriminant " + str(disc) +
+                                                " of the factor " + str(fr) + " cannot be decided");
+                }
+            } else {
+                throw closed_form_error("characteristic polynomial " + poly_text(a) +
+                                        ": irreducible factor " + str(fr) + " of degree " +
+                                        std::to_string(d) + " > 2 has no closed-form roots here");
+            }
+        }
+    }
+    std::vector<characteristic_root> roots;
+    unsigned total = 0;
+    for (const cex& z : candidates) {
+        bool dup = false;
+        for (const auto& r : roots) dup = dup || is_zero_cex(r.z - z);
+        if (dup) continue;
+        unsigned m = 0;
+        std::vector<cex> d = a;
+        while (d.size() > 1 && is_zero_cex(eval_poly(d, z))) {
+            ++m;
+            d = derivative_poly(d);
+        }
+        if (m > 0) {
+            roots.push_back({z, m});
+            total += m;
+        }
+    }
+    if (total != M)
+        throw closed_form_error("characteristic polynomial " + poly_text(a) + ": found roots of total "
+                                "multiplicity " + std::to_string(total) + " instead of " +
+                                std::to_string(M));
+    return roots;
+}
+
+quasi_polynomial impulse_response(const std::vector<cex>& a, const ex& t) {
+    const std::vector<characteristic_root> roots = characteristic_roots(a);
+    const std::size_t M = a.size() - 1;
+    struct basis_fn { cex z; unsigned j; };
+    std::vector<basis_fn> basis;
+    for (const auto& r : roots)
+        for (unsigned j = 0; j < r.multiplicity; ++j) basis.push_back({r.z, j});
+    // real form of the complex system sum_b beta_b phi_b^{(i)}(0) = delta_{i,M-1} / a_M
+    const std::size_t n = basis.size();
+    std::vector<std::vector<ex>> A(2 * M, std::vector<ex>(2 * n, ex(0)));
+    std::vector<ex> rhs(2 * M, ex(0));
+    for (std::size_t i = 0; i < M; ++i)
+        for (std::size_t b = 0; b < n; ++b) {
+            if (i < basis[b].j) continue;
+            cex zp(ex(1), ex(0));
+            for (std::size_t p = 0; p < i - basis[b].j; ++p) zp = tidy_cex(zp * basis[b].z);
+            const ex f = falling(long(i), long(basis[b].j));
+            A[2 * i][b] = f * zp.re;
+            A[2 * i][n + b] = -f * zp.im;
+            A[2 * i + 1][b] = f * zp.im;
+            A[2 * i + 1][n + b] = f * zp.re;
+        }
+    const cex lead = inverse_cex(a[M], "the impulse response");
+    rhs[2 * (M - 1)] = lead.re;
+    rhs[2 * (M - 1) + 1] = lead.im;
+    const auto beta = solve_linear(std::move(A), std::move(rhs));
+    if (!beta)
+        throw closed_form_error("impulse response of " + poly_text(a) +
+                                ": the initial-value system is singular (roots not distinct)");
+    quasi_polynomial y = quasi_polynomial::constant(0, t);
+    for (std::size_t b = 0; b < n; ++b)
+        y = y + quasi_polynomial::monomial({(*beta)[b], (*beta)[n + b]}, basis[b].j, basis[b].z, t);
+    return y;
+}
+
+operator_polynomial operator_polynomial_from(const ex& p, const GiNaC::symbol& K) {
+    const ex e = GiNaC::expand(p);
+    if (!e.is_polynomial(K))
+        throw domain_error("operator polynomial: " + str(p) + " is not a polynomial in " + str(K));
+    const int d = e.degree(K);
+    operator_polynomial a;
+    for (int j = 0; j <= d; ++j) a.push_back(tidy(e.coeff(K, j)));
+    return a;
+}
+
+const placeholder_coefficients& operator_solution::of(const std::string& name) const {
+    for (const auto& p : terms)
+        if (p.vector == name) return p;
+    throw domain_error("operator solution: no placeholder vector named '" + name + "'");
+}
+
+ex operator_solution::coefficient(const std::string& name, unsigned k) const {
+    if (k > 2) throw domain_error("operator solution: coefficient index " + std::to_string(k) + " > 2");
+    return of(name).c[k].to_ex();
+}
+
+namespace {
+
+void validate(const operator_ode& ode, const ex& t) {
+    if (!GiNaC::is_a<GiNaC::symbol>(t)) throw domain_error("operator ODE: " + str(t) + " is not a symbol");
+    if (ode.A.size() < 2)
+        throw domain_error("operator ODE: order " + std::to_string(int(ode.A.size()) - 1) +
+                           " < 1 (A must hold A_0 .. A_M, M >= 1)");
+    const std::size_t M = ode.A.size() - 1;
+    if (ode.initial.size() != M)
+        throw domain_error("operator ODE of order " + std::to_string(M) + ": " +
+                           std::to_string(ode.initial.size()) + " initial-value names given, " +
+                           std::to_string(M) + " needed (x(0), ..., x^(M-1)(0))");
+    for (const auto& Am : ode.A)
+        for (const ex& c : Am)
+            if (c.has(t))
+                throw domain_error("operator ODE: coefficient " + str(c) + " depends on " + str(t) +
+                                   " (only constant coefficients are solved here)");
+    for (const auto& f : ode.forcing) {
+        if (f.vector.empty()) throw domain_error("operator ODE: a forcing term has no vector name");
+        if (!f.q.is_zero() && !f.q.variable().is_equal(t))
+            throw domain_error("operator ODE: a forcing function is in " + str(f.q.variable()) +
+                               ", not in " + str(t));
+    }
+}
+
+struct accumulator {
+    operator_solution sol;
+    void add(const std::string& name, const std::array<quasi_polynomial, 3>& c) {
+        for (auto& p : sol.terms)
+            if (p.vector == name) {
+                for (int k = 0; k < 3; ++k) p.c[k] = p.c[k] + c[k];
+                return;
+            }
+        sol.terms.push_back({name, c});
+    }
+};
+
+ex coeff_at(const operator_polynomial& A, std::size_t j) { return j < A.size() ? A[j] : ex(0); }
+
+// response to x^{(i)}(0) = 1: sum_{m>i} a_m y^{(m-1-i)}
+quasi_polynomial initial_response(const std::vector<cex>& a, const quasi_polynomial& y, std::size_t i) {
+    quasi_polynomial r = quasi_polynomial::constant(0, y.variable());
+    for (std::size_t m = i + 1; m < a.size(); ++m) r = r + a[m] * nth_derivative(y, unsigned(m - 1 - i));
+    return r;
+}
+
+}  // namespace
+
+operator_solution solve(const operator_ode& ode, const rotation_operator_algebra& R, const ex& t) {
+    validate(ode, t);
+    const std::size_t M = ode.A.size() - 1;
+    accumulator acc;
+    acc.sol.t = t;
+    acc.sol.Omega = R.omega();
+    const quasi_polynomial zero = quasi_polynomial::constant(0, t);
+    std::vector<cex> a0(M + 1);
+    for (std::size_t m = 0; m <= M; ++m) a0[m] = cex(tidy(coeff_at(ode.A[m], 0)), ex(0));
+    if (is_zero_cex(a0[M]))
+        throw algebra_error("operator ODE: the leading coefficient A_" + std::to_string(M) +
+                            "(K) is a zero divisor in the algebra of K = w x (its value at K = 0 is "
+                            "0), so x^(" + std::to_string(M) + ") cannot be solved for");
+    const quasi_polynomial y0 = impulse_response(a0, t);
+
+    if (!R.degenerate()) {
+        std::vector<cex> a1(M + 1);
+        for (std::size_t m = 0; m <= M; ++m) a1[m] = R.at_i_omega(ode.A[m]);
+        if (is_zero_cex(a1[M]))
+            throw algebra_error("operator ODE: the leading coefficient A_" + std::to_string(M) +
+                                "(K) is a zero divisor in the algebra of K = w x (it vanishes at K = i|w|)"
+                                ", so x^(" + std::to_string(M) + ") cannot be solved for");
+        const quasi_polynomial y1 = impulse_response(a1, t);
+        for (std::size_t i = 0; i < M; ++i)
+            acc.add(ode.initial[i], R.recombine(initial_response(a0, y0, i), initial_response(a1, y1, i)));
+        for (const auto& f : ode.forcing) {
+            const quasi_polynomial axial = f.power == 0 ? convolution(y0, f.q) : zero;
+            cex ip(ex(1), ex(0));
+            for (unsigned k = 0; k < f.power; ++k) ip = tidy_cex(ip * cex(ex(0), R.omega()));
+            acc.add(f.vector, R.recombine(axial, convolution(y1, ip * f.q)));
+        }
+        return acc.sol;
+    }
+
+    // Omega = 0: K^3 = 0, triangular in the powers of K
+    std::vector<ex> beta(M + 1), gamma(M + 1);
+    for (std::size_t m = 0; m <= M; ++m) {
+        beta[m] = coeff_at(ode.A[m], 1);
+        gamma[m] = coeff_at(ode.A[m], 2);
+    }
+    auto apply = [&](const std::vector<ex>& c, const quasi_polynomial& g) {
+        quasi_polynomial r = zero;
+        for (std::size_t m = 0; m <= M; ++m)
+            if (!c[m].is_zero()) r = r + c[m] * nth_derivative(g, unsigned(m));
+        return r;
+    };
+    auto triangular = [&](const quasi_polynomial& g0, const std::array<quasi_polynomial, 3>& s) {
+        const quasi_polynomial g1 = convolution(y0, s[1] - apply(beta, g0));
+        const quasi_polynomial g2 = convolution(y0, s[2] - apply(beta, g1) - apply(gamma, g0));
+        return std::array<quasi_polynomial, 3>{g0, g1, g2};
+    };
+    for (std::size_t i = 0; i < M; ++i)
+        acc.add(ode.initial[i], triangular(initial_response(a0, y0, i), {zero, zero, zero}));
+    for (const auto& f : ode.forcing) {
+        std::array<quasi_polynomial, 3> s{zero, zero, zero};
+        if (f.power < 3) s[f.power] = f.q;
+        acc.add(f.vector, triangular(convolution(y0, s[0]), s));
+    }
+    return acc.sol;
+}
+
+verification verify(const operator_ode& ode, const rotation_operator_algebra& R,
+                    const operator_solution& sol) {
+    validate(ode, sol.t);
+    const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(sol.t);
+    const std::size_t M = ode.A.size() - 1;
+    verification v;
+    auto fail = [&](bool& flag, const std::string& what) {
+        flag = false;
+        if (!v.detail.empty()) v.detail += "; ";
+        v.detail += what;
+    };
+    std::vector<std::string> names;
+    for (const auto& p : sol.terms) names.push_back(p.vector);
+    for (const auto& f : ode.forcing) {
+        bool found = false;
+        for (const auto& n : names) found = found || n == f.vector;
+        if (!found) fail(v.residual_zero, "forcing vector " + f.vector + " missing from the solution");
+    }
+    for (const auto& p : sol.terms) {
+        const element G = R.make(p.c[0].to_ex(), p.c[1].to_ex(), p.c[2].to_ex());
+        element lhs = R.make(0, 0, 0);
+        for (std::size_t m = 0; m <= M; ++m) {
+            const element Gm = G.map_coeffs([&](const ex& x) { return GiNaC::diff(x, t, int(m)); });
+            lhs = lhs + R.polynomial(ode.A[m]) * Gm;
+            // initial data
+            if (m < M) {
+                const element g0 = Gm.map_coeffs([&](const ex& x) { return tidy(x.subs(t == 0)); });
+                const element want = ode.initial[m] == p.vector ? R.one() : R.make(0, 0, 0);
+                if (!(g0 == want))
+                    fail(v.initial_ok, "x^(" + std::to_string(m) + ")(0) is wrong on " + p.vector);
+            }
+        }
+        element rhs = R.make(0, 0, 0);
+        for (const auto& f : ode.forcing)
+            if (f.vector == p.vector) rhs = rhs + f.q.to_ex() * R.K().pow(long(f.power));
+        const element res = lhs - rhs;
+        for (std::size_t k = 0; k < 3; ++k) {
+            try {
+                if (!quasi_polynomial::from_ex(tidy(res[k]), t).is_zero())
+                    fail(v.residual_zero, "residual coefficient of K^" + std::to_string(k) + " on " +
+                                              p.vector + " is " + str(tidy(res[k])));
+            } catch (const domain_error& e) {
+                fail(v.residual_zero, std::string("residual not a quasi-polynomial: ") + e.what());
+            }
+        }
+    }
+    return v;
+}
+
+}  // namespace symrep::mechanics

@@ -1,0 +1,373 @@
+// symrep/mechanics/quasi_polynomial.cpp -- closed-form calculus of quasi-polynomials.
+//
+// Formulas (lambda = a + i b, exactly non-zero unless stated):
+//   int_0^t tau^k e^{lambda tau} dtau
+//       = e^{lambda t} sum_{j=0}^{k} (-1)^j k!/(k-j)! t^{k-j} / lambda^{j+1}  -  (-1)^k k!/lambda^{k+1},
+//   lambda = 0 exactly:  t^{k+1}/(k+1);
+//   (tau^m e^{lambda tau}) * (tau^n e^{mu tau})
+//       = e^{mu t} sum_{i=0}^{n} C(n,i) (-1)^i t^{n-i} int_0^t tau^{m+i} e^{(lambda-mu) tau} dtau
+//   (binomial expansion of (t - tau)^n), so resonance lambda = mu is the lambda = 0 case
+//   of the integral and produces the secular powers of t exactly.
+#include "mechanics/quasi_polynomial.h"
+
+#include "algebra/scalar.h"
+#include "io/error.h"
+
+namespace symrep::mechanics {
+
+using GiNaC::ex;
+
+namespace {
+
+ex binomial(unsigned n, unsigned i) { return GiNaC::binomial(GiNaC::numeric(n), GiNaC::numeric(i)); }
+
+// Complex power z^n (n >= 0).
+cex cpow(const cex& z, unsigned n) {
+    cex r(ex(1), ex(0));
+    for (unsigned i = 0; i < n; ++i) r = tidy_cex(r * z);
+    return r;
+}
+
+// Real and imaginary part of an expression free of t. Symbols are read as real;
+// complex numerics (3 + 2 I) are split exactly.
+cex split(const ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+        return {GiNaC::real(n), GiNaC::imag(n)};
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::constant>(e)) return {e, ex(0)};
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        cex r(ex(0), ex(0));
+        for (std::size_t i = 0; i < e.nops(); ++i) r += split(e.op(i));
+        return tidy_cex(r);
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        cex r(ex(1), ex(0));
+        for (std::size_t i = 0; i < e.nops(); ++i) r = r * split(e.op(i));
+        return tidy_cex(r);
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer()) {
+        const cex b = split(e.op(0));
+        if (b.im.is_zero()) return {e, ex(0)};
+        const long n = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_long();
+        const cex p = cpow(b, unsigned(n < 0 ? -n : n));
+        return n < 0 ? inverse_cex(p, "a negative power") : p;
+    }
+    // functions and other atoms: real unless they contain a complex number
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_real())
+            return {tidy(GiNaC::real_part(e)), tidy(GiNaC::imag_part(e))};
+    return {e, ex(0)};
+}
+
+bool contains(const ex& e, const ex& t) { return e.has(t); }
+
+std::string str(const ex& e) { return message_text(e); }
+
+constexpr long max_power = 4096;
+
+}  // namespace
+
+bool is_zero_cex(const cex& z) { return is_zero_scalar(z.re) && is_zero_scalar(z.im); }
+
+cex tidy_cex(const cex& z) { return {tidy(z.re), tidy(z.im)}; }
+
+cex inverse_cex(const cex& z, const char* where) {
+    if (is_zero_cex(z))
+        throw domain_error(std::string("division by an exact zero in ") + where);
+    const ex n = tidy(z.norm2());
+    return {tidy(z.re / n), tidy(-z.im / n)};
+}
+
+// --- construction --------------------------------------------------------------
+
+quasi_polynomial quasi_polynomial::constant(const ex& c, const GiNaC::ex& t) {
+    if (contains(c, t))
+        throw domain_error("quasi_polynomial::constant: " + str(c) + " depends on " + str(t));
+    quasi_polynomial q(t);
+    q.add_term({split(c), 0, cex(ex(0), ex(0))});
+    return q;
+}
+
+quasi_polynomial quasi_polynomial::monomial(const cex& c, unsigned k, const cex& lambda,
+                                            const GiNaC::ex& t) {
+    if (contains(c.re, t) || contains(c.im, t) || contains(lambda.re, t) || contains(lambda.im, t))
+        throw domain_error("quasi_polynomial::monomial: coefficient or exponent depends on " + str(t));
+    quasi_polynomial q(t);
+    q.add_term({tidy_cex(c), k, tidy_cex(lambda)});
+    return q;
+}
+
+quasi_polynomial quasi_polynomial::cos_term(const ex& c, unsigned k, const ex& a, const ex& b,
+                                            const GiNaC::ex& t) {
+    const ex h = c / 2;
+    return monomial({h, 0}, k, {a, b}, t) + monomial({h, 0}, k, {a, -b}, t);
+}
+
+quasi_polynomial quasi_polynomial::sin_term(const ex& c, unsigned k, const ex& a, const ex& b,
+                                            const GiNaC::ex& t) {
+    // sin = (e^{ib} - e^{-ib}) / (2i), 1/(2i) = -i/2
+    const ex h = c / 2;
+    return monomial({0, -h}, k, {a, b}, t) + monomial({0, h}, k, {a, -b}, t);
+}
+
+namespace {
+
+// e^{alpha t + beta} for complex alpha, beta free of t.
+quasi_polynomial exp_linear(const cex& alpha, const cex& beta, const GiNaC::ex& t) {
+    const ex m = GiNaC::exp(beta.re);
+    const cex c = beta.im.is_zero() ? cex(m, ex(0))
+                                    : cex(m * GiNaC::cos(beta.im), m * GiNaC::sin(beta.im));
+    return quasi_polynomial::monomial(c, 0, alpha, t);
+}
+
+}  // namespace
+
+quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
+    if (!GiNaC::is_a<GiNaC::symbol>(t))
+        throw domain_error("quasi_polynomial: the variable " + str(t) + " is not a symbol");
+    const ex e = e0;
+    if (!contains(e, t)) return constant(e, t);
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return monomial({1, 0}, 1, {0, 0}, t);  // e == t
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        quasi_polynomial r(t);
+        for (std::size_t i = 0; i < e.nops(); ++i) r = r + from_ex(e.op(i), t);
+        return r;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        quasi_polynomial r = constant(1, t);
+        for (std::size_t i = 0; i < e.nops(); ++i) r = r * from_ex(e.op(i), t);
+        return r;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+        const ex n = e.op(1);
+        if (!contains(n, t) && GiNaC::is_a<GiNaC::numeric>(n) &&
+            GiNaC::ex_to<GiNaC::numeric>(n).is_nonneg_integer()) {
+            const GiNaC::numeric nn = GiNaC::ex_to<GiNaC::numeric>(n);
+            if (nn > GiNaC::numeric(max_power))
+                throw size_error("quasi-polynomial: the power " + str(e) + " exceeds the limit " +
+                                 std::to_string(max_power) + " on exponents expanded here");
+            const quasi_polynomial b = from_ex(e.op(0), t);
+            quasi_polynomial r = constant(1, t);
+            for (long i = 0; i < nn.to_long(); ++i) r = r * b;
+            return r;
+        }
+        throw domain_error("not a quasi-polynomial in " + str(t) + ": the power " + str(e) +
+                           " is not a non-negative integer power of a quasi-polynomial");
+    }
+    if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
+        const std::string f = GiNaC::ex_to<GiNaC::function>(e).get_name();
+        const ex u = GiNaC::expand(e.op(0));
+        if (f == "exp" || f == "cos" || f == "sin" || f == "cosh" || f == "sinh") {
+            if (!u.is_polynomial(t) || u.degree(t) > 1 || contains(u.coeff(t, 1), t) ||
+                contains(u.coeff(t, 0), t))
+                throw domain_error("not a quasi-polynomial in " + str(t) + ": the argument of " +
+                                   str(e) + " is not linear in " + str(t));
+            const cex al = split(u.coeff(t, 1)), be = split(u.coeff(t, 0));
+            const cex ial(-al.im, al.re), ibe(-be.im, be.re);
+            if (f == "exp") return exp_linear(al, be, t);
+            if (f == "cosh") return ex(1) / 2 * (exp_linear(al, be, t) + exp_linear(-al, -be, t));
+            if (f == "sinh") return ex(1) / 2 * (exp_linear(al, be, t) - exp_linear(-al, -be, t));
+            if (f == "cos") return ex(1) / 2 * (exp_linear(ial, ibe, t) + exp_linear(-ial, -ibe, t));
+            // sin u = (e^{iu} - e^{-iu}) / (2i)
+            return cex(ex(0), ex(-1) / 2) * (exp_linear(ial, ibe, t) - exp_linear(-ial, -ibe, t));
+        }
+    }
+    throw domain_error("not a quasi-polynomial in " + str(t) + ": cannot read " + str(e) +
+                       " as a sum of c t^k e^(a t) cos(b t), c t^k e^(a t) sin(b t)");
+}
+
+// --- canonical form --------------------------------------------------------------
+
+void quasi_polynomial::add_term(const qp_term& u) {
+    const cex c = tidy_cex(u.c);
+    if (is_zero_cex(c)) return;
+    for (auto it = terms_.begin(); it != terms_.end(); ++it) {
+        if (it->k == u.k && is_zero_cex(it->lambda - u.lambda)) {
+            it->c = tidy_cex(it->c + c);
+            if (is_zero_cex(it->c)) terms_.erase(it);
+            return;
+        }
+    }
+    terms_.push_back({c, u.k, tidy_cex(u.lambda)});
+}
+
+void quasi_polynomial::adopt_variable(const quasi_polynomial& o) {
+    if (!o.has_t_) return;
+    if (!has_t_) {
+        t_ = o.t_;
+        has_t_ = true;
+        return;
+    }
+    if (!t_.is_equal(o.t_))
+        throw domain_error("quasi-polynomials in different variables " + str(t_) + " and " +
+                           str(o.t_) + " combined");
+}
+
+bool quasi_polynomial::is_real() const { return imag().is_zero(); }
+
+quasi_polynomial quasi_polynomial::conj() const {
+    quasi_polynomial r = *this;
+    r.terms_.clear();
+    for (const auto& u : terms_) r.add_term({u.c.conj(), u.k, u.lambda.conj()});
+    return r;
+}
+
+quasi_polynomial quasi_polynomial::real() const { return ex(1) / 2 * (*this + conj()); }
+
+quasi_polynomial quasi_polynomial::imag() const {
+    return cex(ex(0), ex(-1) / 2) * (*this - conj());
+}
+
+namespace {
+
+// Chooses s = sigma * b with sigma = +-1 so that b and -b give the same s.
+ex canonical_frequency(const ex& b, int& sigma) {
+    const ex s = GiNaC::expand(b), m = GiNaC::expand(-b);
+    sigma = 1;
+    if (has_negative_sign(s)) { sigma = -1; return m; }
+    if (has_negative_sign(m)) return s;
+    if (GiNaC::is_a<GiNaC::add>(s)) {
+        int neg = 0, n = int(s.nops());
+        for (int i = 0; i < n; ++i) neg += has_negative_sign(s.op(i)) ? 1 : 0;
+        if (2 * neg > n) { sigma = -1; return m; }
+        if (2 * neg < n) return s;
+    }
+    if (m.compare(s) < 0) { sigma = -1; return m; }
+    return s;
+}
+
+}  // namespace
+
+GiNaC::ex quasi_polynomial::to_ex() const {
+    ex re = 0, im = 0;
+    for (const auto& u : terms_) {
+        int sg = 1;
+        const ex b = canonical_frequency(u.lambda.im, sg);
+        const ex cs = GiNaC::cos(b * t_), sn = sg * GiNaC::sin(b * t_);
+        const ex base = GiNaC::pow(t_, u.k) * GiNaC::exp(u.lambda.re * t_);
+        re += base * (u.c.re * cs - u.c.im * sn);
+        im += base * (u.c.re * sn + u.c.im * cs);
+    }
+    re = tidy(re);
+    im = tidy(im);
+    return im.is_zero() ? re : re + GiNaC::I * im;
+}
+
+cex quasi_polynomial::at_zero() const {
+    cex r(ex(0), ex(0));
+    for (const auto& u : terms_)
+        if (u.k == 0) r += u.c;
+    return tidy_cex(r);
+}
+
+quasi_polynomial quasi_polynomial::derivative() const {
+    quasi_polynomial r = *this;
+    r.terms_.clear();
+    for (const auto& u : terms_) {
+        if (u.k > 0) r.add_term({ex(u.k) * u.c, u.k - 1, u.lambda});
+        r.add_term({u.c * u.lambda, u.k, u.lambda});
+    }
+    return r;
+}
+
+quasi_polynomial integral_monomial(unsigned k, const cex& lambda, const GiNaC::ex& t) {
+    if (is_zero_cex(lambda))
+        return quasi_polynomial::monomial({ex(1) / (k + 1), 0}, k + 1, {0, 0}, t);
+    const cex inv = inverse_cex(lambda, "int_0^t tau^k e^(lambda tau) dtau");
+    quasi_polynomial r = quasi_polynomial::constant(0, t);
+    cex invp = inv;  // inv^{j+1}
+    ex ff = 1;       // k!/(k-j)!
+    for (unsigned j = 0; j <= k; ++j) {
+        const ex s = (j % 2 == 0 ? ex(1) : ex(-1)) * ff;
+        r = r + quasi_polynomial::monomial(s * invp, k - j, lambda, t);
+        if (j == k) r = r - quasi_polynomial::monomial(s * invp, 0, {0, 0}, t);
+        ff = ff * ex(k - j);
+        invp = tidy_cex(invp * inv);
+    }
+    return r;
+}
+
+quasi_polynomial quasi_polynomial::antiderivative() const {
+    quasi_polynomial r = *this;
+    r.terms_.clear();
+    for (const auto& u : terms_) r = r + u.c * integral_monomial(u.k, u.lambda, t_);
+    return r;
+}
+
+quasi_polynomial quasi_polynomial::subs(const ex& sym, const ex& s) const {
+    if (has_t_ && contains(s, t_))
+        throw domain_error("quasi_polynomial::subs: the replacement " + str(s) + " depends on " +
+                           str(t_));
+    quasi_polynomial r = *this;
+    r.terms_.clear();
+    auto sb = [&](const ex& e) { return tidy(e.subs(sym == s)); };
+    try {
+        for (const auto& u : terms_)
+            r.add_term({{sb(u.c.re), sb(u.c.im)}, u.k, {sb(u.lambda.re), sb(u.lambda.im)}});
+    } catch (const symrep::error&) {
+        throw;
+    } catch (const std::exception& e) {
+        // e.g. 1/(a^2 + b^2) at a = b = 0: a value excluded by the generic reading
+        throw domain_error("quasi_polynomial::subs: " + str(sym) + " = " + str(s) +
+                           " is a value excluded by the generic reading of this closed form (" +
+                           e.what() + "); rebuild it from the specialized integrand instead");
+    }
+    return r;
+}
+
+// --- arithmetic ---------------------------------------------------------------------
+
+quasi_polynomial quasi_polynomial::operator-() const { return ex(-1) * *this; }
+
+quasi_polynomial operator+(const quasi_polynomial& f, const quasi_polynomial& g) {
+    quasi_polynomial r = f;
+    r.adopt_variable(g);
+    for (const auto& u : g.terms_) r.add_term(u);
+    return r;
+}
+
+quasi_polynomial operator-(const quasi_polynomial& f, const quasi_polynomial& g) { return f + (-g); }
+
+quasi_polynomial operator*(const quasi_polynomial& f, const quasi_polynomial& g) {
+    quasi_polynomial r = f;
+    r.adopt_variable(g);
+    r.terms_.clear();
+    for (const auto& u : f.terms_)
+        for (const auto& v : g.terms_) r.add_term({u.c * v.c, u.k + v.k, u.lambda + v.lambda});
+    return r;
+}
+
+quasi_polynomial operator*(const cex& s, const quasi_polynomial& f) {
+    quasi_polynomial r = f;
+    r.terms_.clear();
+    for (const auto& u : f.terms_) r.add_term({s * u.c, u.k, u.lambda});
+    return r;
+}
+
+quasi_polynomial operator*(const ex& s, const quasi_polynomial& f) {
+    if (f.has_t_ && contains(s, f.t_))
+        throw domain_error("scalar factor " + str(s) + " depends on " + str(f.t_) +
+                           "; multiply quasi-polynomials instead");
+    return split(s) * f;
+}
+
+quasi_polynomial convolution(const quasi_polynomial& f, const quasi_polynomial& g) {
+    quasi_polynomial r = f;
+    r.adopt_variable(g);
+    r.terms_.clear();
+    const ex t = r.t_;
+    for (const auto& u : f.terms_)
+        for (const auto& v : g.terms_) {
+            const cex c = u.c * v.c, d = u.lambda - v.lambda;
+            for (unsigned i = 0; i <= v.k; ++i) {
+                const ex s = binomial(v.k, i) * (i % 2 == 0 ? 1 : -1);
+                r = r + integral_monomial(u.k + i, d, t) *
+                            quasi_polynomial::monomial(s * c, v.k - i, v.lambda, t);
+            }
+        }
+    return r;
+}
+
+}  // namespace symrep::mechanics
