@@ -149,11 +149,6 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
     return res;
 }
 
-integration_result integrate(const rhs_function& f, double t0, const Eigen::VectorXd& y0,
-                             const std::vector<double>& output_times, const integration_options& options) {
-    return integrate(f, t0, std::vector<double>(y0.data(), y0.data() + y0.size()), output_times, options);
-}
-
 symbolic_system::symbolic_system(const std::vector<GiNaC::ex>& rhs, const GiNaC::symbol& t,
                                  const std::vector<GiNaC::symbol>& state, const parameter_values& params)
     : dim_(state.size()) {

@@ -75,9 +75,14 @@ struct integration_result {
 integration_result integrate(const rhs_function& f, double t0, const std::vector<double>& y0,
                              const std::vector<double>& output_times, const integration_options& options = {});
 
-/// Eigen overload (same semantics).
-integration_result integrate(const rhs_function& f, double t0, const Eigen::VectorXd& y0,
-                             const std::vector<double>& output_times, const integration_options& options = {});
+/// Eigen overload (same semantics; a template so that a braced list {a, b}
+/// picks the std::vector overload unambiguously).
+template <class Derived>
+integration_result integrate(const rhs_function& f, double t0, const Eigen::MatrixBase<Derived>& y0,
+                             const std::vector<double>& output_times, const integration_options& options = {}) {
+    const Eigen::VectorXd y = y0;
+    return integrate(f, t0, std::vector<double>(y.data(), y.data() + y.size()), output_times, options);
+}
 
 /// n_points equally spaced times t0, ..., t1 (n_points >= 2; n_points == 1 gives {t1}).
 std::vector<double> linspace(double t0, double t1, std::size_t n_points);
