@@ -223,3 +223,23 @@ TEST(NumericEvaluator, ErrorsNameTheCulprit) {
     // A symbol-free unsupported function is folded to its value by GiNaC.
     EXPECT_NEAR(compile(std::vector<ex>{GiNaC::zeta(ex(2)) * x}, {x})({1.0})[0], M_PI * M_PI / 6, 1e-15);
 }
+
+TEST(NumericEvaluator, EvalManyIsBitwiseEval) {
+    symbol x("x"), y("y");
+    const std::vector<ex> outs = {GiNaC::sin(x * y) + GiNaC::cos(x * y) * x, GiNaC::exp(-x) / (1 + y * y),
+                                  GiNaC::atan2(y, x) + GiNaC::pow(x, 5), GiNaC::Pi};
+    const compiled_function f = compile(outs, {x, y});
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-3, 3);
+    for (std::size_t n : {std::size_t{1}, std::size_t{15}, std::size_t{16}, std::size_t{37}}) {
+        std::vector<double> in(2 * n), out(4 * n);
+        for (auto& v : in) v = u(rng);
+        f.eval_many(in.data(), out.data(), n);
+        for (std::size_t p = 0; p < n; ++p) {
+            double one[4];
+            f.eval(&in[2 * p], one);
+            for (int j = 0; j < 4; ++j) EXPECT_EQ(out[4 * p + j], one[j]) << n << " " << p << " " << j;
+        }
+    }
+    f.eval_many(nullptr, nullptr, 0);  // nothing to do, no access
+}

@@ -4,7 +4,8 @@
 // three-address instructions over a register file of doubles. Structurally equal
 // subtrees are computed once (hash-consing on GiNaC's ex hash and ex::is_equal),
 // so x*y + sin(x*y) evaluates x*y a single time, and x^2, x^3, x^5 share their
-// partial products. Subtrees without input symbols (Pi, sqrt(2), 3/7, ...) are
+// partial products; sin(u) and cos(u) of one argument are fused into one
+// sincos instruction. Subtrees without input symbols (Pi, sqrt(2), 3/7, ...) are
 // evaluated once at compile time by GiNaC's evalf and stored as constants.
 //
 // Supported: + - * / (as GiNaC represents them: sums, products, powers with
@@ -65,6 +66,7 @@ enum class opcode : std::uint8_t {
     asinh,
     acosh,
     atanh,
+    sincos, ///< r[dst] = std::sin(r[a]), r[b] = std::cos(r[a])  (fused by compile())
 };
 
 /// One instruction of the flat program.
@@ -72,7 +74,7 @@ struct instruction {
     opcode op;
     std::uint32_t dst;
     std::uint32_t a;
-    std::uint32_t b;  ///< unused by unary operations
+    std::uint32_t b;  ///< unused by unary operations; the cos destination of sincos
 };
 
 /// Name of an opcode ("add", "sin", ...), for listings and tests.
@@ -108,7 +110,12 @@ public:
 
     /// Evaluate at many points: `in` holds n_points rows of n_inputs() values,
     /// `out` receives n_points rows of n_outputs() values (row-major).
+    /// Runs the program on blocks of `block_size` points at once (each
+    /// instruction loops over the block, which the compiler vectorizes), so the
+    /// interpreter's per-instruction overhead is shared by the block; several
+    /// times faster per point than eval(), with bitwise the same results.
     void eval_many(const double* in, double* out, std::size_t n_points) const;
+    static constexpr std::size_t block_size = 16;
 
     /// Human-readable listing of the program (one instruction per line).
     std::string listing() const;
@@ -122,6 +129,7 @@ private:
     std::vector<std::uint32_t> outputs_;   // register of each output
 
     void run(double* r) const;
+    void run_block(double* r) const;  // registers of block_size lanes each
 };
 
 /// Options of compile(). The defaults are what every caller wants; the switch

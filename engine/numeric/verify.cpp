@@ -38,11 +38,12 @@ verify_result verify(const compiled_function& closed_form, const rhs_function& r
 
     auto s = std::chrono::steady_clock::now();
     res.closed_form.resize(static_cast<Eigen::Index>(n_points), static_cast<Eigen::Index>(m));
-    std::vector<double> row(m);
-    for (std::size_t k = 0; k < n_points; ++k) {
-        closed_form.eval(&res.times[k], row.data());
-        for (std::size_t i = 0; i < m; ++i) res.closed_form(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = row[i];
-    }
+    // Row-major block of n_points x m values, then into the (column-major) matrix.
+    std::vector<double> values(n_points * m);
+    closed_form.eval_many(res.times.data(), values.data(), n_points);
+    for (std::size_t k = 0; k < n_points; ++k)
+        for (std::size_t i = 0; i < m; ++i)
+            res.closed_form(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = values[k * m + i];
     res.closed_form_seconds = seconds_since(s);
 
     integration_result ir = integrate(rhs, t0, initial_state, res.times, options);
