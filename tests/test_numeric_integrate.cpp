@@ -218,3 +218,40 @@ TEST(NumericVerify, OscillatorCorrectAndWrongClosedForms) {
     const verify_result nan = verify({GiNaC::log(t - 10)}, t, rhs, {x, v}, {1.0, 2.0}, p, 0.0, 20.0, 11);
     EXPECT_TRUE(std::isinf(nan.max_relative_difference));
 }
+
+TEST(NumericVerify, RotatingFrameRodriguesClosedForm) {
+    // r(t) = exp(-W t) u, u = r0 + (v0 + w x r0) t, by the Rodrigues formula, against
+    // the symbolic system r' = v, v' = -2 w x v - w x (w x r), parameters w1, w2, w3.
+    symbol t("t"), w1("w1"), w2("w2"), w3("w3");
+    std::vector<symbol> s;
+    for (const char* n : {"x", "y", "z", "vx", "vy", "vz"}) s.emplace_back(n);
+    const GiNaC::matrix W{{0, -w3, w2}, {w3, 0, -w1}, {-w2, w1, 0}};
+    const GiNaC::matrix r{{s[0]}, {s[1]}, {s[2]}}, v{{s[3]}, {s[4]}, {s[5]}};
+    const GiNaC::matrix acc = W.mul(v).mul_scalar(-2).add(W.mul(W).mul(r).mul_scalar(-1));
+    const std::vector<ex> rhs = {s[3], s[4], s[5], acc(0, 0), acc(1, 0), acc(2, 0)};
+
+    const GiNaC::matrix w{{w1}, {w2}, {w3}}, r0{{1}, {0}, {GiNaC::numeric(1, 2)}}, v0{{0}, {1}, {GiNaC::numeric(1, 5)}};
+    const ex Omega = GiNaC::sqrt(w1 * w1 + w2 * w2 + w3 * w3);
+    const GiNaC::matrix u = r0.add(v0.add(W.mul(r0)).mul_scalar(t));
+    const ex wu = (w.transpose().mul(u))(0, 0);
+    const GiNaC::matrix rt = u.mul_scalar(GiNaC::cos(Omega * t))
+                                 .sub(W.mul(u).mul_scalar(GiNaC::sin(Omega * t) / Omega))
+                                 .add(w.mul_scalar((1 - GiNaC::cos(Omega * t)) / (Omega * Omega) * wu));
+    std::vector<ex> cf = flatten_outputs(rt);
+    for (int i = 0; i < 3; ++i) cf.push_back(cf[i].diff(t));  // and the velocity
+
+    const parameter_values p = {{w1, 0.3}, {w2, -0.5}, {w3, 0.8}};
+    for (stepper_kind k : all_steppers) {
+        integration_options o;
+        o.stepper = k;
+        const verify_result res = verify(cf, t, rhs, s, {}, p, 0.0, 20.0, 201, o);
+        EXPECT_LT(res.max_relative_difference, 1e-8) << stepper_name(k);
+        EXPECT_GT(res.rhs_evaluations, 0u);
+    }
+    // A wrong sign of the Coriolis rotation (exp(+W t) instead of exp(-W t)) is caught.
+    GiNaC::exmap flip = {{w1, -w1}, {w2, -w2}, {w3, -w3}};
+    std::vector<ex> wrong;
+    for (int i = 0; i < 3; ++i) wrong.push_back(cf[i].subs(flip));
+    const verify_result bad = verify(wrong, t, rhs, s, {1, 0, 0.5, 0, 1, 0.2}, p, 0.0, 20.0, 201);
+    EXPECT_GT(bad.max_relative_difference, 0.1);
+}
