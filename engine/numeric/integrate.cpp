@@ -1,8 +1,10 @@
 // symrep/numeric/integrate.cpp -- see integrate.h.
 #include "numeric/integrate.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <boost/numeric/odeint.hpp>
@@ -108,9 +110,8 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
 
     const double span = all.back() - t0;
     double dt = options.initial_step > 0 ? options.initial_step : (span > 0 ? 1e-3 * span : 1e-3);
-    const int max_steps = options.max_steps_between_outputs > static_cast<std::size_t>(INT32_MAX)
-                              ? INT32_MAX
-                              : static_cast<int>(options.max_steps_between_outputs);
+    constexpr auto int_max = static_cast<std::size_t>(std::numeric_limits<int>::max());
+    const int max_steps = static_cast<int>(std::min(options.max_steps_between_outputs, int_max));
     state_type y = y0;
     const auto start = std::chrono::steady_clock::now();
     try {
