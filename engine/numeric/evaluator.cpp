@@ -584,11 +584,19 @@ op_sincos : {
 }
 
 void compiled_function::eval(const double* in, double* out) const {
-    thread_local std::vector<double> scratch;
-    if (scratch.size() < n_registers_) scratch.resize(n_registers_);
-    double* r = scratch.data();
-    if (n_inputs_) std::memcpy(r, in, n_inputs_ * sizeof(double));
-    if (!constants_.empty()) std::memcpy(r + n_inputs_, constants_.data(), constants_.size() * sizeof(double));
+    // Small register files live on the stack (no allocation, no thread-local
+    // lookup); larger ones in a per-thread buffer.
+    constexpr std::size_t stack_registers = 512;
+    double stack[stack_registers];
+    double* r = stack;
+    if (n_registers_ > stack_registers) {
+        thread_local std::vector<double> scratch;
+        if (scratch.size() < n_registers_) scratch.resize(n_registers_);
+        r = scratch.data();
+    }
+    for (std::size_t i = 0; i < n_inputs_; ++i) r[i] = in[i];
+    const double* c = constants_.data();
+    for (std::size_t i = 0, n = constants_.size(); i < n; ++i) r[n_inputs_ + i] = c[i];
     run(r);
     for (std::size_t i = 0; i < outputs_.size(); ++i) out[i] = r[outputs_[i]];
 }

@@ -25,7 +25,8 @@
 // for code inside namespace symrep that relies on `using GiNaC::numeric;`).
 //
 // Thread safety: a compiled_function is immutable after compile(); eval() is
-// const and uses a thread_local scratch register file, so one compiled_function
+// const and uses a register file on the stack (or a thread_local one for large
+// programs), so one compiled_function
 // may be evaluated from several threads at once.
 #pragma once
 
