@@ -1,0 +1,719 @@
+// symrep/numeric/evaluator.cpp -- see evaluator.h.
+#include "numeric/evaluator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <tuple>
+#include <unordered_map>
+
+#include "io/error.h"
+
+namespace symrep::num {
+
+namespace {
+
+/// A printed expression, cut to a length fit for an error message.
+std::string bounded(const GiNaC::ex& e, std::size_t max_len = 120) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    if (s.size() > max_len) s = s.substr(0, max_len - 3) + "...";
+    return s;
+}
+
+struct function_entry {
+    const char* name;
+    opcode op;
+    std::size_t arity;
+};
+
+const function_entry function_table[] = {
+    {"sqrt", opcode::sqrt, 1},   {"exp", opcode::exp, 1},     {"log", opcode::log, 1},
+    {"abs", opcode::abs, 1},     {"sin", opcode::sin, 1},     {"cos", opcode::cos, 1},
+    {"tan", opcode::tan, 1},     {"asin", opcode::asin, 1},   {"acos", opcode::acos, 1},
+    {"atan", opcode::atan, 1},   {"atan2", opcode::atan2, 2}, {"sinh", opcode::sinh, 1},
+    {"cosh", opcode::cosh, 1},   {"tanh", opcode::tanh, 1},   {"asinh", opcode::asinh, 1},
+    {"acosh", opcode::acosh, 1}, {"atanh", opcode::atanh, 1},
+};
+
+std::string supported_functions() {
+    std::string s;
+    for (const auto& f : function_table) {
+        if (!s.empty()) s += ", ";
+        s += f.name;
+    }
+    return s;
+}
+
+bool is_unary(opcode op) {
+    switch (op) {
+        case opcode::add:
+        case opcode::sub:
+        case opcode::mul:
+        case opcode::div:
+        case opcode::pow:
+        case opcode::atan2:
+        case opcode::sincos:
+            return false;
+        default:
+            return true;
+    }
+}
+
+// Register numbering during the build: inputs are [0, n_inputs), constants and
+// temporaries get tagged indices that finish() renumbers to their final place.
+constexpr std::uint32_t const_tag = 0x80000000u;
+constexpr std::uint32_t temp_tag = 0x40000000u;
+constexpr std::uint32_t index_mask = 0x3fffffffu;
+
+}  // namespace
+
+const char* opcode_name(opcode op) {
+    switch (op) {
+        case opcode::add: return "add";
+        case opcode::sub: return "sub";
+        case opcode::mul: return "mul";
+        case opcode::div: return "div";
+        case opcode::neg: return "neg";
+        case opcode::pow: return "pow";
+        case opcode::sqrt: return "sqrt";
+        case opcode::exp: return "exp";
+        case opcode::log: return "log";
+        case opcode::abs: return "abs";
+        case opcode::sin: return "sin";
+        case opcode::cos: return "cos";
+        case opcode::tan: return "tan";
+        case opcode::asin: return "asin";
+        case opcode::acos: return "acos";
+        case opcode::atan: return "atan";
+        case opcode::atan2: return "atan2";
+        case opcode::sinh: return "sinh";
+        case opcode::cosh: return "cosh";
+        case opcode::tanh: return "tanh";
+        case opcode::asinh: return "asinh";
+        case opcode::acosh: return "acosh";
+        case opcode::atanh: return "atanh";
+        case opcode::sincos: return "sincos";
+    }
+    return "?";
+}
+
+/// Builds the flat program of a compiled_function (one per compile() call).
+class program_builder {
+public:
+    program_builder(const std::vector<GiNaC::symbol>& inputs, bool share)
+        : inputs_(inputs), share_(share) {
+        for (std::size_t i = 0; i < inputs.size(); ++i) {
+            auto [it, fresh] = input_reg_.emplace(GiNaC::ex(inputs[i]), static_cast<std::uint32_t>(i));
+            if (!fresh)
+                throw type_error("compile: input symbol '" + inputs[i].get_name() +
+                                 "' is listed twice");
+        }
+    }
+
+    std::uint32_t node(const GiNaC::ex& e) {
+        if (share_) {
+            auto it = memo_.find(e);
+            if (it != memo_.end()) return it->second;
+        }
+        std::uint32_t r = compile_uncached(e);
+        if (share_) memo_.emplace(e, r);
+        return r;
+    }
+
+    compiled_function finish(const std::vector<std::uint32_t>& outputs) {
+        if (share_) fuse_sincos();
+        compiled_function f;
+        f.n_inputs_ = inputs_.size();
+        f.constants_ = constants_;
+        const auto n_in = static_cast<std::uint32_t>(inputs_.size());
+        const auto n_const = static_cast<std::uint32_t>(constants_.size());
+        auto place = [&](std::uint32_t r) -> std::uint32_t {
+            if (r & const_tag) return n_in + (r & index_mask);
+            if (r & temp_tag) return n_in + n_const + (r & index_mask);
+            return r;
+        };
+        f.program_.reserve(program_.size());
+        for (instruction ins : program_) {
+            ins.dst = place(ins.dst);
+            ins.a = place(ins.a);
+            ins.b = is_unary(ins.op) ? 0 : place(ins.b);
+            f.program_.push_back(ins);
+        }
+        for (auto r : outputs) f.outputs_.push_back(place(r));
+        f.n_registers_ = n_in + n_const + n_temps_;
+        return f;
+    }
+
+private:
+    /// sin(a) and cos(a) of the same register become one sincos instruction at
+    /// the place of the earlier one (both results are then ready before any use).
+    void fuse_sincos() {
+        std::map<std::uint32_t, std::size_t> sin_at, cos_at;
+        for (std::size_t i = 0; i < program_.size(); ++i) {
+            if (program_[i].op == opcode::sin) sin_at.emplace(program_[i].a, i);
+            if (program_[i].op == opcode::cos) cos_at.emplace(program_[i].a, i);
+        }
+        std::vector<bool> drop(program_.size(), false);
+        bool any = false;
+        for (const auto& [a, i] : sin_at) {
+            auto c = cos_at.find(a);
+            if (c == cos_at.end()) continue;
+            const std::size_t j = c->second;
+            const instruction fused{opcode::sincos, program_[i].dst, a, program_[j].dst};
+            program_[std::min(i, j)] = fused;
+            drop[std::max(i, j)] = true;
+            any = true;
+        }
+        if (!any) return;
+        std::vector<instruction> kept;
+        kept.reserve(program_.size());
+        for (std::size_t i = 0; i < program_.size(); ++i)
+            if (!drop[i]) kept.push_back(program_[i]);
+        program_.swap(kept);
+    }
+
+    const std::vector<GiNaC::symbol>& inputs_;
+    bool share_;
+    std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> input_reg_;
+    std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
+    std::unordered_map<GiNaC::ex, bool, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> constant_memo_;
+    std::map<std::uint64_t, std::uint32_t> constant_reg_;  // by bit pattern
+    std::map<std::tuple<opcode, std::uint32_t, std::uint32_t>, std::uint32_t> value_numbers_;
+    std::vector<double> constants_;
+    std::vector<instruction> program_;
+    std::uint32_t n_temps_ = 0;
+
+    std::uint32_t constant(double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        auto it = constant_reg_.find(bits);
+        if (it != constant_reg_.end()) return it->second;
+        auto r = const_tag | static_cast<std::uint32_t>(constants_.size());
+        constants_.push_back(v);
+        constant_reg_.emplace(bits, r);
+        return r;
+    }
+
+    std::uint32_t emit(opcode op, std::uint32_t a, std::uint32_t b = 0) {
+        if (is_unary(op)) b = 0;
+        auto key = std::make_tuple(op, a, b);
+        if (share_) {
+            auto it = value_numbers_.find(key);
+            if (it != value_numbers_.end()) return it->second;
+        }
+        if (n_temps_ > index_mask) throw size_error("compile: the closed form is too large");
+        std::uint32_t dst = temp_tag | n_temps_++;
+        program_.push_back({op, dst, a, b});
+        if (share_) value_numbers_.emplace(key, dst);
+        return dst;
+    }
+
+    /// base^n for an integer n >= 1 by repeated squaring; partial powers are
+    /// shared through emit()'s value numbering.
+    std::uint32_t powi(std::uint32_t base, unsigned long n) {
+        if (n == 1) return base;
+        if (n % 2 == 0) {
+            std::uint32_t h = powi(base, n / 2);
+            return emit(opcode::mul, h, h);
+        }
+        return emit(opcode::mul, powi(base, n - 1), base);
+    }
+
+    /// True if e contains no symbol (so it evaluates to a number).
+    bool is_constant(const GiNaC::ex& e) {
+        if (GiNaC::is_a<GiNaC::symbol>(e)) return false;
+        if (e.nops() == 0) return true;
+        auto it = constant_memo_.find(e);
+        if (it != constant_memo_.end()) return it->second;
+        bool c = true;
+        for (std::size_t i = 0; i < e.nops() && c; ++i) c = is_constant(e.op(i));
+        constant_memo_.emplace(e, c);
+        return c;
+    }
+
+    static double real_value(const GiNaC::numeric& n, const GiNaC::ex& where) {
+        if (!n.is_real())
+            throw domain_error("cannot evaluate numerically: complex value " + bounded(where) +
+                               " (the evaluator works in real doubles)");
+        return n.to_double();
+    }
+
+    std::uint32_t compile_uncached(const GiNaC::ex& e) {
+        using namespace GiNaC;
+        if (is_a<symbol>(e)) {
+            auto it = input_reg_.find(e);
+            if (it != input_reg_.end()) return it->second;
+            std::string names;
+            for (const auto& s : inputs_) names += (names.empty() ? "" : ", ") + s.get_name();
+            throw type_error("cannot evaluate numerically: symbol '" + ex_to<symbol>(e).get_name() +
+                             "' has no value (inputs: " + (names.empty() ? "none" : names) + ")");
+        }
+        if (is_a<GiNaC::numeric>(e)) return constant(real_value(ex_to<GiNaC::numeric>(e), e));
+        if (is_a<lst>(e) || is_a<matrix>(e))
+            throw type_error("cannot compile a list or matrix inside a scalar output: " + bounded(e));
+        if (is_a<relational>(e))
+            throw type_error("cannot compile an equation or comparison: " + bounded(e));
+        if (is_constant(e)) {
+            // Subtrees without symbols are computed once, by GiNaC, at compile time.
+            ex v;
+            try {
+                v = e.evalf();
+            } catch (const std::exception&) {
+                v = e;
+            }
+            if (is_a<GiNaC::numeric>(v)) return constant(real_value(ex_to<GiNaC::numeric>(v), e));
+            // No numeric value (e.g. an unsupported function): compile structurally,
+            // which names what is not supported.
+        }
+        if (is_a<add>(e)) return compile_add(e);
+        if (is_a<mul>(e)) return compile_mul(e);
+        if (is_a<power>(e)) return compile_power(e);
+        if (is_a<function>(e)) return compile_function(e);
+        throw type_error("cannot compile " + bounded(e) + " (not a number, input symbol, sum, product, "
+                         "power or supported function)");
+    }
+
+    /// A term t of a sum is written as -(u) with u "positive" if it is a
+    /// negative number or a product with a negative numeric coefficient.
+    static bool negated_term(const GiNaC::ex& t, GiNaC::ex& u) {
+        using namespace GiNaC;
+        if (is_a<GiNaC::numeric>(t) && ex_to<GiNaC::numeric>(t).is_real() && ex_to<GiNaC::numeric>(t).is_negative()) {
+            u = -t;
+            return true;
+        }
+        if (is_a<mul>(t)) {
+            const ex c = t.op(t.nops() - 1);
+            if (is_a<GiNaC::numeric>(c) && ex_to<GiNaC::numeric>(c).is_real() && ex_to<GiNaC::numeric>(c).is_negative()) {
+                u = -t;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    std::uint32_t compile_add(const GiNaC::ex& e) {
+        std::uint32_t acc = 0;
+        bool have = false;
+        std::vector<std::uint32_t> negatives;
+        // Symbol-free terms fold into one constant.
+        GiNaC::ex csum = 0;
+        std::vector<GiNaC::ex> terms;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            if (is_constant(e.op(i)))
+                csum += e.op(i);
+            else
+                terms.push_back(e.op(i));
+        }
+        if (!csum.is_zero()) terms.push_back(csum);
+        for (const GiNaC::ex& term : terms) {
+            GiNaC::ex u;
+            if (negated_term(term, u)) {
+                negatives.push_back(node(u));
+                continue;
+            }
+            std::uint32_t r = node(term);
+            acc = have ? emit(opcode::add, acc, r) : r;
+            have = true;
+        }
+        for (std::uint32_t r : negatives) {
+            acc = have ? emit(opcode::sub, acc, r) : emit(opcode::neg, r);
+            have = true;
+        }
+        return acc;
+    }
+
+    std::uint32_t compile_mul(const GiNaC::ex& e) {
+        using namespace GiNaC;
+        std::uint32_t num = 0, den = 0;
+        bool have_num = false, have_den = false, negate = false;
+        // Symbol-free factors (numeric coefficient, Pi, sqrt(2), ...) fold into one constant.
+        std::vector<ex> rest, cfactors;
+        ex cprod = 1;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            if (is_constant(e.op(i))) {
+                cfactors.push_back(e.op(i));
+                cprod *= e.op(i);
+            } else {
+                rest.push_back(e.op(i));
+            }
+        }
+        if (!cfactors.empty()) {
+            ex v;
+            try {
+                v = cprod.evalf();
+            } catch (const std::exception&) {
+                v = cprod;
+            }
+            if (is_a<GiNaC::numeric>(v)) {
+                const double c = real_value(ex_to<GiNaC::numeric>(v), cprod);
+                if (c == -1.0) {
+                    negate = true;
+                } else if (c != 1.0) {
+                    num = constant(c);
+                    have_num = true;
+                }
+            } else {
+                rest.insert(rest.end(), cfactors.begin(), cfactors.end());  // compiled one by one
+            }
+        }
+        for (const ex& f : rest) {
+            if (is_a<power>(f) && is_a<GiNaC::numeric>(f.op(1)) && ex_to<GiNaC::numeric>(f.op(1)).is_real() &&
+                ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
+                // A denominator factor b^(-k): divide by b^k.
+                std::uint32_t r = node(power(f.op(0), -f.op(1)));
+                den = have_den ? emit(opcode::mul, den, r) : r;
+                have_den = true;
+                continue;
+            }
+            std::uint32_t r = node(f);
+            num = have_num ? emit(opcode::mul, num, r) : r;
+            have_num = true;
+        }
+        std::uint32_t res;
+        if (have_den)
+            res = emit(opcode::div, have_num ? num : constant(1.0), den);
+        else
+            res = have_num ? num : constant(1.0);
+        return negate ? emit(opcode::neg, res) : res;
+    }
+
+    std::uint32_t compile_power(const GiNaC::ex& e) {
+        using namespace GiNaC;
+        const ex b = e.op(0), x = e.op(1);
+        if (is_a<GiNaC::numeric>(x) && ex_to<GiNaC::numeric>(x).is_real()) {
+            const GiNaC::numeric& n = ex_to<GiNaC::numeric>(x);
+            if (n.is_integer()) {
+                if (n.is_zero()) return constant(1.0);
+                const GiNaC::numeric m = abs(n);
+                if (m <= 1024) {
+                    std::uint32_t r = powi(node(b), static_cast<unsigned long>(m.to_long()));
+                    return n.is_negative() ? emit(opcode::div, constant(1.0), r) : r;
+                }
+            } else if (n.denom() == 2) {
+                // b^(p/2) = sqrt(b)^p
+                const GiNaC::numeric p = abs(n.numer());
+                if (p <= 1024) {
+                    std::uint32_t s = emit(opcode::sqrt, node(b));
+                    std::uint32_t r = powi(s, static_cast<unsigned long>(p.to_long()));
+                    return n.is_negative() ? emit(opcode::div, constant(1.0), r) : r;
+                }
+            }
+            return emit(opcode::pow, node(b), constant(n.to_double()));
+        }
+        return emit(opcode::pow, node(b), node(x));
+    }
+
+    std::uint32_t compile_function(const GiNaC::ex& e) {
+        using namespace GiNaC;
+        const std::string name = ex_to<function>(e).get_name();
+        for (const auto& f : function_table) {
+            if (name != f.name) continue;
+            if (e.nops() != f.arity) break;
+            if (f.arity == 1) return emit(f.op, node(e.op(0)));
+            return emit(f.op, node(e.op(0)), node(e.op(1)));
+        }
+        throw type_error("cannot evaluate numerically: unsupported function '" + name + "' in " +
+                         bounded(e) + " (supported: " + supported_functions() + ")");
+    }
+};
+
+std::vector<GiNaC::ex> flatten_outputs(const GiNaC::ex& e) {
+    using namespace GiNaC;
+    std::vector<ex> out;
+    if (is_a<lst>(e)) {
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            auto sub = flatten_outputs(e.op(i));
+            out.insert(out.end(), sub.begin(), sub.end());
+        }
+    } else if (is_a<matrix>(e)) {
+        const matrix& m = ex_to<matrix>(e);
+        for (unsigned i = 0; i < m.rows(); ++i)
+            for (unsigned j = 0; j < m.cols(); ++j) out.push_back(m(i, j));
+    } else {
+        out.push_back(e);
+    }
+    return out;
+}
+
+compiled_function compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+                          const compile_options& options) {
+    program_builder b(inputs, options.share_subexpressions);
+    std::vector<std::uint32_t> regs;
+    regs.reserve(outputs.size());
+    for (const auto& e : outputs) regs.push_back(b.node(e));
+    return b.finish(regs);
+}
+
+compiled_function compile(const GiNaC::ex& output, const std::vector<GiNaC::symbol>& inputs,
+                          const compile_options& options) {
+    return compile(flatten_outputs(output), inputs, options);
+}
+
+// The interpreter loop. With GCC/Clang it is direct-threaded (computed goto:
+// each handler ends with its own indirect jump, which the branch predictor
+// learns per handler); elsewhere a plain switch.
+void compiled_function::run(double* r) const {
+    const instruction* ip = program_.data();
+    const instruction* const end = ip + program_.size();
+#if defined(__GNUC__)
+    static const void* const labels[] = {
+        &&op_add, &&op_sub, &&op_mul, &&op_div, &&op_neg, &&op_pow, &&op_sqrt, &&op_exp, &&op_log, &&op_abs, &&op_sin, &&op_cos, &&op_tan, &&op_asin, &&op_acos, &&op_atan, &&op_atan2, &&op_sinh, &&op_cosh, &&op_tanh, &&op_asinh, &&op_acosh, &&op_atanh, &&op_sincos};
+    static_assert(sizeof(labels) / sizeof(labels[0]) == static_cast<std::size_t>(opcode::sincos) + 1);
+#define SYMREP_NEXT()                                   \
+    do {                                                \
+        if (++ip == end) return;                        \
+        goto *labels[static_cast<std::size_t>(ip->op)]; \
+    } while (0)
+    if (ip == end) return;
+    goto *labels[static_cast<std::size_t>(ip->op)];
+op_add:
+    r[ip->dst] = r[ip->a] + r[ip->b];
+    SYMREP_NEXT();
+op_sub:
+    r[ip->dst] = r[ip->a] - r[ip->b];
+    SYMREP_NEXT();
+op_mul:
+    r[ip->dst] = r[ip->a] * r[ip->b];
+    SYMREP_NEXT();
+op_div:
+    r[ip->dst] = r[ip->a] / r[ip->b];
+    SYMREP_NEXT();
+op_neg:
+    r[ip->dst] = -r[ip->a];
+    SYMREP_NEXT();
+op_pow:
+    r[ip->dst] = std::pow(r[ip->a], r[ip->b]);
+    SYMREP_NEXT();
+op_sqrt:
+    r[ip->dst] = std::sqrt(r[ip->a]);
+    SYMREP_NEXT();
+op_exp:
+    r[ip->dst] = std::exp(r[ip->a]);
+    SYMREP_NEXT();
+op_log:
+    r[ip->dst] = std::log(r[ip->a]);
+    SYMREP_NEXT();
+op_abs:
+    r[ip->dst] = std::fabs(r[ip->a]);
+    SYMREP_NEXT();
+op_sin:
+    r[ip->dst] = std::sin(r[ip->a]);
+    SYMREP_NEXT();
+op_cos:
+    r[ip->dst] = std::cos(r[ip->a]);
+    SYMREP_NEXT();
+op_tan:
+    r[ip->dst] = std::tan(r[ip->a]);
+    SYMREP_NEXT();
+op_asin:
+    r[ip->dst] = std::asin(r[ip->a]);
+    SYMREP_NEXT();
+op_acos:
+    r[ip->dst] = std::acos(r[ip->a]);
+    SYMREP_NEXT();
+op_atan:
+    r[ip->dst] = std::atan(r[ip->a]);
+    SYMREP_NEXT();
+op_atan2:
+    r[ip->dst] = std::atan2(r[ip->a], r[ip->b]);
+    SYMREP_NEXT();
+op_sinh:
+    r[ip->dst] = std::sinh(r[ip->a]);
+    SYMREP_NEXT();
+op_cosh:
+    r[ip->dst] = std::cosh(r[ip->a]);
+    SYMREP_NEXT();
+op_tanh:
+    r[ip->dst] = std::tanh(r[ip->a]);
+    SYMREP_NEXT();
+op_asinh:
+    r[ip->dst] = std::asinh(r[ip->a]);
+    SYMREP_NEXT();
+op_acosh:
+    r[ip->dst] = std::acosh(r[ip->a]);
+    SYMREP_NEXT();
+op_atanh:
+    r[ip->dst] = std::atanh(r[ip->a]);
+    SYMREP_NEXT();
+op_sincos : {
+        const double a = r[ip->a];
+        r[ip->dst] = std::sin(a);
+        r[ip->b] = std::cos(a);
+    }
+    SYMREP_NEXT();
+#undef SYMREP_NEXT
+#else
+    for (; ip != end; ++ip) {
+        switch (ip->op) {
+            case opcode::add: r[ip->dst] = r[ip->a] + r[ip->b]; break;
+            case opcode::sub: r[ip->dst] = r[ip->a] - r[ip->b]; break;
+            case opcode::mul: r[ip->dst] = r[ip->a] * r[ip->b]; break;
+            case opcode::div: r[ip->dst] = r[ip->a] / r[ip->b]; break;
+            case opcode::neg: r[ip->dst] = -r[ip->a]; break;
+            case opcode::pow: r[ip->dst] = std::pow(r[ip->a], r[ip->b]); break;
+            case opcode::sqrt: r[ip->dst] = std::sqrt(r[ip->a]); break;
+            case opcode::exp: r[ip->dst] = std::exp(r[ip->a]); break;
+            case opcode::log: r[ip->dst] = std::log(r[ip->a]); break;
+            case opcode::abs: r[ip->dst] = std::fabs(r[ip->a]); break;
+            case opcode::sin: r[ip->dst] = std::sin(r[ip->a]); break;
+            case opcode::cos: r[ip->dst] = std::cos(r[ip->a]); break;
+            case opcode::tan: r[ip->dst] = std::tan(r[ip->a]); break;
+            case opcode::asin: r[ip->dst] = std::asin(r[ip->a]); break;
+            case opcode::acos: r[ip->dst] = std::acos(r[ip->a]); break;
+            case opcode::atan: r[ip->dst] = std::atan(r[ip->a]); break;
+            case opcode::atan2: r[ip->dst] = std::atan2(r[ip->a], r[ip->b]); break;
+            case opcode::sinh: r[ip->dst] = std::sinh(r[ip->a]); break;
+            case opcode::cosh: r[ip->dst] = std::cosh(r[ip->a]); break;
+            case opcode::tanh: r[ip->dst] = std::tanh(r[ip->a]); break;
+            case opcode::asinh: r[ip->dst] = std::asinh(r[ip->a]); break;
+            case opcode::acosh: r[ip->dst] = std::acosh(r[ip->a]); break;
+            case opcode::atanh: r[ip->dst] = std::atanh(r[ip->a]); break;
+            case opcode::sincos: {
+                const double a = r[ip->a];
+                r[ip->dst] = std::sin(a);
+                r[ip->b] = std::cos(a);
+                break;
+            }
+        }
+    }
+#endif
+}
+
+void compiled_function::eval(const double* in, double* out) const {
+    // Small register files live on the stack (no allocation, no thread-local
+    // lookup); larger ones in a per-thread buffer.
+    constexpr std::size_t stack_registers = 512;
+    double stack[stack_registers];
+    double* r = stack;
+    if (n_registers_ > stack_registers) {
+        thread_local std::vector<double> scratch;
+        if (scratch.size() < n_registers_) scratch.resize(n_registers_);
+        r = scratch.data();
+    }
+    for (std::size_t i = 0; i < n_inputs_; ++i) r[i] = in[i];
+    const double* c = constants_.data();
+    for (std::size_t i = 0, n = constants_.size(); i < n; ++i) r[n_inputs_ + i] = c[i];
+    run(r);
+    for (std::size_t i = 0; i < outputs_.size(); ++i) out[i] = r[outputs_[i]];
+}
+
+// Block version of run(): register i occupies r[i * B, (i + 1) * B). Every
+// instruction writes a fresh register (the program is in SSA form), so the
+// destination never aliases an operand.
+void compiled_function::run_block(double* r) const {
+    constexpr std::size_t B = block_size;
+    for (const instruction& ins : program_) {
+        double* __restrict__ d = r + std::size_t{ins.dst} * B;
+        const double* __restrict__ a = r + std::size_t{ins.a} * B;
+        const double* __restrict__ b = r + std::size_t{ins.b} * B;
+        switch (ins.op) {
+            case opcode::add: for (std::size_t k = 0; k < B; ++k) d[k] = a[k] + b[k]; break;
+            case opcode::sub: for (std::size_t k = 0; k < B; ++k) d[k] = a[k] - b[k]; break;
+            case opcode::mul: for (std::size_t k = 0; k < B; ++k) d[k] = a[k] * b[k]; break;
+            case opcode::div: for (std::size_t k = 0; k < B; ++k) d[k] = a[k] / b[k]; break;
+            case opcode::neg: for (std::size_t k = 0; k < B; ++k) d[k] = -a[k]; break;
+            case opcode::pow: for (std::size_t k = 0; k < B; ++k) d[k] = std::pow(a[k], b[k]); break;
+            case opcode::sqrt: for (std::size_t k = 0; k < B; ++k) d[k] = std::sqrt(a[k]); break;
+            case opcode::exp: for (std::size_t k = 0; k < B; ++k) d[k] = std::exp(a[k]); break;
+            case opcode::log: for (std::size_t k = 0; k < B; ++k) d[k] = std::log(a[k]); break;
+            case opcode::abs: for (std::size_t k = 0; k < B; ++k) d[k] = std::fabs(a[k]); break;
+            case opcode::sin: for (std::size_t k = 0; k < B; ++k) d[k] = std::sin(a[k]); break;
+            case opcode::cos: for (std::size_t k = 0; k < B; ++k) d[k] = std::cos(a[k]); break;
+            case opcode::tan: for (std::size_t k = 0; k < B; ++k) d[k] = std::tan(a[k]); break;
+            case opcode::asin: for (std::size_t k = 0; k < B; ++k) d[k] = std::asin(a[k]); break;
+            case opcode::acos: for (std::size_t k = 0; k < B; ++k) d[k] = std::acos(a[k]); break;
+            case opcode::atan: for (std::size_t k = 0; k < B; ++k) d[k] = std::atan(a[k]); break;
+            case opcode::atan2: for (std::size_t k = 0; k < B; ++k) d[k] = std::atan2(a[k], b[k]); break;
+            case opcode::sinh: for (std::size_t k = 0; k < B; ++k) d[k] = std::sinh(a[k]); break;
+            case opcode::cosh: for (std::size_t k = 0; k < B; ++k) d[k] = std::cosh(a[k]); break;
+            case opcode::tanh: for (std::size_t k = 0; k < B; ++k) d[k] = std::tanh(a[k]); break;
+            case opcode::asinh: for (std::size_t k = 0; k < B; ++k) d[k] = std::asinh(a[k]); break;
+            case opcode::acosh: for (std::size_t k = 0; k < B; ++k) d[k] = std::acosh(a[k]); break;
+            case opcode::atanh: for (std::size_t k = 0; k < B; ++k) d[k] = std::atanh(a[k]); break;
+            case opcode::sincos: {
+                double* __restrict__ c = r + std::size_t{ins.b} * B;
+                for (std::size_t k = 0; k < B; ++k) {
+                    d[k] = std::sin(a[k]);
+                    c[k] = std::cos(a[k]);
+                }
+                break;
+            }
+        }
+    }
+}
+
+void compiled_function::eval_many(const double* in, double* out, std::size_t n_points) const {
+    constexpr std::size_t B = block_size;
+    if (n_points == 0) return;
+    thread_local std::vector<double> scratch;
+    if (scratch.size() < n_registers_ * B) scratch.resize(n_registers_ * B);
+    double* r = scratch.data();
+    const std::size_t n_out = outputs_.size();
+    for (std::size_t c = 0; c < constants_.size(); ++c)
+        std::fill(r + (n_inputs_ + c) * B, r + (n_inputs_ + c + 1) * B, constants_[c]);
+    for (std::size_t p0 = 0; p0 < n_points; p0 += B) {
+        const std::size_t m = std::min(B, n_points - p0);
+        for (std::size_t i = 0; i < n_inputs_; ++i) {
+            double* ri = r + i * B;
+            for (std::size_t k = 0; k < m; ++k) ri[k] = in[(p0 + k) * n_inputs_ + i];
+            for (std::size_t k = m; k < B; ++k) ri[k] = ri[0];  // unused lanes: a valid point
+        }
+        run_block(r);
+        for (std::size_t j = 0; j < n_out; ++j) {
+            const double* rj = r + std::size_t{outputs_[j]} * B;
+            for (std::size_t k = 0; k < m; ++k) out[(p0 + k) * n_out + j] = rj[k];
+        }
+    }
+}
+
+std::vector<double> compiled_function::operator()(const std::vector<double>& in) const {
+    if (in.size() != n_inputs_)
+        throw type_error("compiled function takes " + std::to_string(n_inputs_) + " input(s), got " +
+                         std::to_string(in.size()));
+    std::vector<double> out(outputs_.size());
+    eval(in.data(), out.data());
+    return out;
+}
+
+Eigen::Vector3d compiled_function::eval3(const double* in) const {
+    if (outputs_.size() != 3)
+        throw type_error("eval3: the compiled function has " + std::to_string(outputs_.size()) +
+                         " output(s), not 3");
+    Eigen::Vector3d v;
+    eval(in, v.data());
+    return v;
+}
+
+Eigen::Vector3d compiled_function::eval3(const std::vector<double>& in) const {
+    if (in.size() != n_inputs_)
+        throw type_error("compiled function takes " + std::to_string(n_inputs_) + " input(s), got " +
+                         std::to_string(in.size()));
+    return eval3(in.data());
+}
+
+std::string compiled_function::listing() const {
+    std::ostringstream os;
+    os << "inputs r0..r" << (n_inputs_ ? n_inputs_ - 1 : 0) << (n_inputs_ ? "" : " (none)") << "\n";
+    os.precision(17);
+    for (std::size_t i = 0; i < constants_.size(); ++i)
+        os << "r" << n_inputs_ + i << " = " << constants_[i] << "\n";
+    for (const auto& ins : program_) {
+        if (ins.op == opcode::sincos) {
+            os << "r" << ins.dst << ", r" << ins.b << " = sincos r" << ins.a << "\n";
+            continue;
+        }
+        os << "r" << ins.dst << " = " << opcode_name(ins.op) << " r" << ins.a;
+        if (!is_unary(ins.op)) os << ", r" << ins.b;
+        os << "\n";
+    }
+    os << "outputs";
+    for (auto o : outputs_) os << " r" << o;
+    os << "\n";
+    return os.str();
+}
+
+}  // namespace symrep::num

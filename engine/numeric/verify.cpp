@@ -1,0 +1,122 @@
+// symrep/numeric/verify.cpp -- see verify.h.
+#include "numeric/verify.h"
+
+#include <chrono>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "io/error.h"
+
+namespace symrep::num {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point s) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count();
+}
+}  // namespace
+
+verify_result verify(const compiled_function& closed_form, const rhs_function& rhs,
+                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                     const integration_options& options) {
+    if (closed_form.n_inputs() != 1)
+        throw type_error("verify: the closed form must be a function of t alone (it takes " +
+                         std::to_string(closed_form.n_inputs()) + " inputs)");
+    const std::size_t m = closed_form.n_outputs();
+    if (m == 0) throw type_error("verify: the closed form has no components");
+    if (m > initial_state.size())
+        throw type_error("verify: the closed form has " + std::to_string(m) + " components but the state only " +
+                         std::to_string(initial_state.size()));
+    if (n_points < 2) throw type_error("verify: at least 2 sample points are needed");
+    if (!std::isfinite(t0) || !std::isfinite(t1) || !(t1 > t0))
+        throw type_error("verify: the time span must be finite with t1 > t0");
+
+    verify_result res;
+    res.n_points = n_points;
+    res.times = linspace(t0, t1, n_points);
+
+    auto s = std::chrono::steady_clock::now();
+    res.closed_form.resize(static_cast<Eigen::Index>(n_points), static_cast<Eigen::Index>(m));
+    // Row-major block of n_points x m values, then into the (column-major) matrix.
+    std::vector<double> values(n_points * m);
+    closed_form.eval_many(res.times.data(), values.data(), n_points);
+    for (std::size_t k = 0; k < n_points; ++k)
+        for (std::size_t i = 0; i < m; ++i)
+            res.closed_form(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = values[k * m + i];
+    res.closed_form_seconds = seconds_since(s);
+
+    integration_result ir = integrate(rhs, t0, initial_state, res.times, options);
+    res.integration_seconds = ir.wall_seconds;
+    res.rhs_evaluations = ir.rhs_evaluations;
+    res.steps = ir.steps;
+    res.integrated = std::move(ir.states);
+
+    double worst = -1.0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const auto c = static_cast<Eigen::Index>(i);
+        double scale = 0.0, max_diff = 0.0;
+        std::size_t k_max = 0;
+        bool nan = false;
+        for (std::size_t k = 0; k < n_points; ++k) {
+            const auto r = static_cast<Eigen::Index>(k);
+            const double d = std::fabs(res.closed_form(r, c) - res.integrated(r, c));
+            if (std::isnan(d)) {
+                if (!nan) k_max = k;
+                nan = true;
+            } else if (d > max_diff && !nan) {
+                max_diff = d;
+                k_max = k;
+            }
+            scale = std::max(scale, std::fabs(res.integrated(r, c)));
+        }
+        double rel = scale > 0 ? max_diff / scale : max_diff;
+        if (nan) {
+            // A closed form that is NaN or inf somewhere is as wrong as it gets.
+            rel = std::numeric_limits<double>::infinity();
+            max_diff = rel;
+        }
+        res.max_absolute_difference = std::max(res.max_absolute_difference, max_diff);
+        if (rel > worst) {
+            worst = rel;
+            res.max_relative_difference = rel;
+            res.component_of_max = i;
+            res.time_of_max = res.times[k_max];
+        }
+    }
+    return res;
+}
+
+verify_result verify(const std::vector<GiNaC::ex>& closed_form, const GiNaC::symbol& t,
+                     const std::vector<GiNaC::ex>& ode_rhs, const std::vector<GiNaC::symbol>& state,
+                     const std::vector<double>& initial_state, const parameter_values& params, double t0,
+                     double t1, std::size_t n_points, const integration_options& options) {
+    auto s = std::chrono::steady_clock::now();
+    // The closed form is a function of t; parameters are substituted as exact
+    // numbers so that the compiler folds every parameter-only subexpression.
+    GiNaC::exmap values;
+    for (const auto& [p, v] : params) values[p] = GiNaC::numeric(v);
+    std::vector<GiNaC::ex> cf;
+    cf.reserve(closed_form.size());
+    for (const auto& e : closed_form) cf.push_back(e.subs(values));
+    compiled_function f = compile(cf, {t});
+    symbolic_system sys(ode_rhs, t, state, params);
+    const double compile_seconds = seconds_since(s);
+
+    std::vector<double> y0 = initial_state;
+    if (y0.empty()) {
+        if (cf.size() != state.size())
+            throw type_error("verify: no initial state given and the closed form has " + std::to_string(cf.size()) +
+                             " components for " + std::to_string(state.size()) + " state variables");
+        y0.resize(cf.size());
+        f.eval(&t0, y0.data());
+    }
+    if (y0.size() != state.size())
+        throw type_error("verify: initial state has " + std::to_string(y0.size()) + " components for " +
+                         std::to_string(state.size()) + " state variables");
+    verify_result res = verify(f, sys.function(), y0, t0, t1, n_points, options);
+    res.compile_seconds = compile_seconds;
+    return res;
+}
+
+}  // namespace symrep::num
