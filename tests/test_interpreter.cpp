@@ -238,3 +238,36 @@ TEST(Interpreter, ChainOperatorLocations) {
     // [3]*4 is fine (a list times a scalar); 1 + 2 + [12] fails at the second '+'
     EXPECT_EQ(t.err.str().rfind("t.sr:2:7: error: cannot add an expression and a list", 0), 0u) << t.err.str();
 }
+
+TEST(Interpreter, SeqAndSumEvaluateTheBodyPerValue) {
+    test_session t;
+    const ex x = t.s.symbol("x");
+    // diff(x^3, x, k) needs k as a number when it is evaluated
+    lang::value v = t.val("seq(diff(x^3, x, k), k, 0, 2)");
+    ASSERT_TRUE(v.is_list());
+    ASSERT_EQ(v.as_list().size(), 3u);
+    EXPECT_TRUE(same(v.as_list()[2].as_ex(), 6 * x));
+    EXPECT_TRUE(same(t.ex("sum(diff(x^4, x, k), k, 1, 2)"), 4 * pow(x, 3) + 12 * pow(x, 2)));
+    EXPECT_TRUE(same(t.ex("sum(k^2, k, [1, 2, 3])"), 14));
+    // a variable of the same name is restored, an unassigned one stays a symbol
+    t.run("k := 7");
+    t.val("seq(k, k, 0, 1)");
+    EXPECT_TRUE(same(t.ex("k"), 7));
+    t.run("j := 0");
+    EXPECT_TRUE(same(t.ex("seq(m, m, 1, 1)[0] + m"), 1 + t.s.symbol("m")));
+    EXPECT_THROW(t.val("seq(k, k, 3)"), script_error);  // 3 is not a list
+}
+
+TEST(Interpreter, PolynomialAlgebraFromScriptSymbols) {
+    // the variable of a script-made P_n is the session's realsymbol X
+    test_session t;
+    t.run("A := polynomial_algebra(X^3 - 2*X + 1, X)\nv := element(A, [0, 1, 0])");
+    const ex Y = t.s.symbol("Y");
+    EXPECT_TRUE(same(t.ex("minpoly(v, Y)"), pow(Y, 3) - 2 * Y + 1));
+    const ex tt = t.s.symbol("t");
+    const ex e0 = t.ex("exp(v, t)[0]");
+    EXPECT_FALSE(e0.is_zero());
+    // e^(v t) solves y''' - 2 y' + y = 0 coordinatewise, with e^(0) = 1
+    EXPECT_TRUE(same(e0.diff(GiNaC::ex_to<GiNaC::symbol>(tt), 3) - 2 * e0.diff(GiNaC::ex_to<GiNaC::symbol>(tt)) + e0, 0));
+    EXPECT_TRUE(same(e0.subs(tt == 0), 1));
+}

@@ -243,3 +243,13 @@ TEST(NumericEvaluator, EvalManyIsBitwiseEval) {
     }
     f.eval_many(nullptr, nullptr, 0);  // nothing to do, no access
 }
+
+// The interpreter's symbols are realsymbols; a realsymbol copied into a plain
+// GiNaC::symbol gets another hash and would no longer match the expression.
+TEST(NumericEvaluator, RealsymbolInputsAreNotSliced) {
+    const GiNaC::realsymbol a("a"), b("b");
+    const compiled_function f = compile(ex(a * a + 3 * b), {a, b});
+    EXPECT_DOUBLE_EQ(f({2.0, 5.0})[0], 19.0);
+    const GiNaC::possymbol p("p");
+    EXPECT_DOUBLE_EQ(compile(ex(sqrt(p * p)), {p})({1.5})[0], 1.5);
+}

@@ -104,8 +104,8 @@ TEST(NumericIntegrate, RotatingFrameLinearSystemEveryStepper) {
 TEST(NumericIntegrate, SymbolicSystemMatchesHandWritten) {
     // The rotating-frame system from symbolic right-hand sides with parameters w1, w2, w3.
     symbol t("t"), w1("w1"), w2("w2"), w3("w3");
-    std::vector<symbol> s;
-    for (const char* n : {"x", "y", "z", "vx", "vy", "vz"}) s.emplace_back(n);
+    std::vector<ex> s;
+    for (const char* n : {"x", "y", "z", "vx", "vy", "vz"}) s.push_back(symbol(n));
     const GiNaC::matrix W{{0, -w3, w2}, {w3, 0, -w1}, {-w2, w1, 0}};
     const GiNaC::matrix r{{s[0]}, {s[1]}, {s[2]}}, v{{s[3]}, {s[4]}, {s[5]}};
     const GiNaC::matrix acc = W.mul(v).mul_scalar(-2).add(W.mul(W).mul(r).mul_scalar(-1));
@@ -223,8 +223,8 @@ TEST(NumericVerify, RotatingFrameRodriguesClosedForm) {
     // r(t) = exp(-W t) u, u = r0 + (v0 + w x r0) t, by the Rodrigues formula, against
     // the symbolic system r' = v, v' = -2 w x v - w x (w x r), parameters w1, w2, w3.
     symbol t("t"), w1("w1"), w2("w2"), w3("w3");
-    std::vector<symbol> s;
-    for (const char* n : {"x", "y", "z", "vx", "vy", "vz"}) s.emplace_back(n);
+    std::vector<ex> s;
+    for (const char* n : {"x", "y", "z", "vx", "vy", "vz"}) s.push_back(symbol(n));
     const GiNaC::matrix W{{0, -w3, w2}, {w3, 0, -w1}, {-w2, w1, 0}};
     const GiNaC::matrix r{{s[0]}, {s[1]}, {s[2]}}, v{{s[3]}, {s[4]}, {s[5]}};
     const GiNaC::matrix acc = W.mul(v).mul_scalar(-2).add(W.mul(W).mul(r).mul_scalar(-1));

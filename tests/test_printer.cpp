@@ -85,3 +85,20 @@ TEST(Printer, DeterministicAcrossSymbolCreationOrder) {
     test_session t3;
     EXPECT_EQ(show(t3, "expand((a + b + c)^2)"), "a^2 + 2*a*b + 2*a*c + b^2 + 2*b*c + c^2");
 }
+
+// GiNaC keeps (x2 - x1)*t or -(x1 - x2)*t depending on the order it built the
+// terms in; both must print alike, with every sum factor's leading term positive.
+TEST(Printer, SignOfSumFactorsIsCanonical) {
+    using GiNaC::ex;
+    const GiNaC::realsymbol x1("x1"), x2("x2"), t("t"), y("y");
+    const ex a = x2 - x1, b = x1 - x2;
+    const ex held1 = GiNaC::dynallocate<GiNaC::mul>(a, t).setflag(GiNaC::status_flags::evaluated);
+    const ex held2 = -(b * t);  // mul(x1 - x2, t) with coefficient -1
+    EXPECT_EQ(symrep::lang::print_ex(held1), symrep::lang::print_ex(held2));
+    EXPECT_EQ(symrep::lang::print_ex(held1), "-(x1 - x2)*t");
+    const ex p1 = GiNaC::dynallocate<GiNaC::power>(a, 3).setflag(GiNaC::status_flags::evaluated);
+    EXPECT_EQ(symrep::lang::print_ex(p1), "-(x1 - x2)^3");
+    const ex p2 = GiNaC::dynallocate<GiNaC::power>(a, 2).setflag(GiNaC::status_flags::evaluated);
+    EXPECT_EQ(symrep::lang::print_ex(p2), "(x1 - x2)^2");
+    EXPECT_EQ(symrep::lang::print_ex(ex(1) / a * y), "-y/(x1 - x2)");
+}

@@ -40,7 +40,7 @@ public:
 
     /// The generating polynomial p(X) (in the symbol given to make()).
     const GiNaC::ex& polynomial() const { return p_; }
-    const GiNaC::symbol& variable() const { return X_; }
+    const GiNaC::ex& variable() const { return X_; }
     /// Coordinates of v (for n = 1, v = -a_1 times the unit).
     coeffs generator() const;
     /// (II.1 completion) the Frobenius matrix of p.
@@ -51,7 +51,7 @@ public:
 private:
     std::size_t n_;
     GiNaC::ex p_;
-    GiNaC::symbol X_;
+    GiNaC::ex X_;  // an ex, not a symbol: a copy would slice a realsymbol (other hash)
     std::vector<GiNaC::ex> low_;  // p = X^n + sum_{k<n} low_[k] X^k
     std::string name_;
 };

@@ -349,7 +349,8 @@ void register_core_builtins(registry& r) {
         });
     add(r, "seq", "seq(e, k, a, b) / seq(e, k, [values])",
         "The list of the values of e for k = a, a+1, ..., b (integers), or for k in a list (like Maxima's "
-        "makelist). e is evaluated first with k a symbol, so k must not be an assigned variable.",
+        "makelist). e is evaluated once for each value, with the variable k bound to it (a variable k of the "
+        "same name is restored afterwards), so seq(diff(x^3, x, k), k, 0, 2) works.",
         "", "seq(k^2, k, 0, 4)", 3, 4, seq_values);
     add(r, "sum", "sum(l) / sum(e, k, a, b)",
         "The sum of the entries of a list (expressions or elements of one algebra), or of e for k = a..b.", "",

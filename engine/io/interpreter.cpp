@@ -2,6 +2,7 @@
 #include "io/interpreter.h"
 
 #include <algorithm>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -453,6 +454,11 @@ value session::call(const node& n) {
         }
         throw type_error(msg);
     }
+    // seq(e, k, ...) and sum(e, k, ...) evaluate e once per value of k (so that
+    // seq(diff(f, x, k), k, 0, 3) sees k as a number, not as a symbol).
+    if ((b->name == "seq" || b->name == "sum") && (n.kids.size() == 3 || n.kids.size() == 4) &&
+        n.kids[1]->kind == node::ident)
+        return iterate(*b, n);
     std::vector<value> args;
     args.reserve(n.kids.size());
     for (const auto& k : n.kids) args.push_back(eval(*k));
@@ -465,6 +471,46 @@ value session::call(const node& n) {
                          ", got " + std::to_string(args.size()) + " (usage: " + b->signature + ")");
     }
     return b->fn(args, *this);
+}
+
+value session::iterate(const builtin& b, const node& n) {
+    const std::string& k = n.kids[1]->text;
+    list values;
+    if (n.kids.size() == 3) {
+        value l = eval(*n.kids[2]);
+        if (!l.is_list())
+            throw type_error(b.name + ": argument 3 must be a list of values for " + k + " (usage: " + b.signature + ")");
+        values = l.as_list();
+    } else {
+        const std::vector<value> a{value(), value(), eval(*n.kids[2]), eval(*n.kids[3])};
+        const long lo = arg_int(a, 2, b, -1000000000L, 1000000000L);
+        const long hi = arg_int(a, 3, b, -1000000000L, 1000000000L);
+        if (hi - lo > 10000000) throw size_error(b.name + ": more than 10^7 values asked for");
+        for (long i = lo; i <= hi; ++i) values.push_back(ex(i));
+    }
+    // k is bound as a variable while e is evaluated, then restored.
+    std::optional<value> saved;
+    if (const value* old = get(k)) saved = *old;
+    auto restore = [&] {
+        if (saved) vars_[k] = *saved;
+        else vars_.erase(k);
+    };
+    list out;
+    try {
+        for (const value& kv : values) {
+            vars_[k] = kv;
+            out.push_back(eval(*n.kids[0]));
+        }
+    } catch (...) {
+        restore();
+        throw;
+    }
+    restore();
+    if (b.name == "seq") return out;
+    if (out.empty()) return ex(0);
+    value acc = out[0];
+    for (std::size_t i = 1; i < out.size(); ++i) acc = binary_op("+", acc, out[i]);
+    return acc;
 }
 
 value session::eval_inner(const node& n) {

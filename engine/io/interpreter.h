@@ -85,6 +85,7 @@ public:
 private:
     value eval_inner(const node& n);
     value call(const node& n);
+    value iterate(const builtin& b, const node& n);
     void report(const source_location& where, const std::string& msg);
     void exec(const node& stmt, bool echo);
 

@@ -129,6 +129,29 @@ numeric degree_of(const ex& e) {
     return 0;
 }
 
+printed pr_sum(const ex& e);
+
+// A sum whose printed form starts with a minus sign ("-a + b").
+bool leading_term_negative(const ex& sum) { return pr_sum(sum).text.rfind("-", 0) == 0; }
+
+// f = sign * g with g a sum whose leading term is positive (or a power of one with
+// an integer exponent); other factors are returned unchanged with sign 1.
+ex sign_normalized(const ex& f, int& sign) {
+    sign = 1;
+    if (is_a<GiNaC::add>(f)) {
+        if (!leading_term_negative(f)) return f;
+        sign = -1;
+        return -f;
+    }
+    if (is_a<GiNaC::power>(f) && is_a<GiNaC::add>(f.op(0)) && is_a<numeric>(f.op(1)) &&
+        ex_to<numeric>(f.op(1)).is_integer() && leading_term_negative(f.op(0))) {
+        if (ex_to<numeric>(f.op(1)).is_odd()) sign = -1;
+        // held: GiNaC's own evaluation would move the sign back by its internal order
+        return GiNaC::dynallocate<GiNaC::power>(-f.op(0), f.op(1)).setflag(GiNaC::status_flags::evaluated);
+    }
+    return f;
+}
+
 // Splits a term into its numeric coefficient and its other factors.
 void split_term(const ex& t, numeric& c, std::vector<ex>& rest) {
     c = 1;
@@ -140,8 +163,16 @@ void split_term(const ex& t, numeric& c, std::vector<ex>& rest) {
     if (is_a<GiNaC::mul>(t)) {
         for (std::size_t i = 0; i < t.nops(); ++i) {
             const ex f = t.op(i);
-            if (is_a<numeric>(f)) c *= ex_to<numeric>(f);
-            else rest.push_back(f);
+            if (is_a<numeric>(f)) {
+                c *= ex_to<numeric>(f);
+            } else {
+                // (x1 - x2)*t and -(x2 - x1)*t are the same product; GiNaC may hold
+                // either, depending on the order it built terms in (memory addresses).
+                // Print every sum factor with its leading term positive.
+                int sign = 1;
+                rest.push_back(sign_normalized(f, sign));
+                if (sign < 0) c = -c;
+            }
         }
         return;
     }
@@ -314,6 +345,10 @@ printed pr(const ex& e) {
         return pr_product(c, rest);
     }
     if (is_a<GiNaC::power>(e)) {
+        int sign = 1;
+        const ex g = sign_normalized(e, sign);
+        if (sign < 0) return {"-" + paren(pr(g), l_product), l_product};
+        if (!g.is_equal(e)) return pr(g);
         const ex b = e.op(0), n = e.op(1);
         if (n == GiNaC::ex(1) / 2) return {"sqrt(" + pr(b).text + ")", l_atom};
         if (negative_exponent(e)) return pr_product(1, {e});

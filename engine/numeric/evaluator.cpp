@@ -104,12 +104,14 @@ const char* opcode_name(opcode op) {
 /// Builds the flat program of a compiled_function (one per compile() call).
 class program_builder {
 public:
-    program_builder(const std::vector<GiNaC::symbol>& inputs, bool share)
+    program_builder(const std::vector<GiNaC::ex>& inputs, bool share)
         : inputs_(inputs), share_(share) {
         for (std::size_t i = 0; i < inputs.size(); ++i) {
+            if (!GiNaC::is_a<GiNaC::symbol>(inputs[i]))
+                throw type_error("compile: input " + std::to_string(i + 1) + " is not a symbol");
             auto [it, fresh] = input_reg_.emplace(GiNaC::ex(inputs[i]), static_cast<std::uint32_t>(i));
             if (!fresh)
-                throw type_error("compile: input symbol '" + inputs[i].get_name() +
+                throw type_error("compile: input symbol '" + symbol_name(inputs[i]) +
                                  "' is listed twice");
         }
     }
@@ -176,7 +178,7 @@ private:
         program_.swap(kept);
     }
 
-    const std::vector<GiNaC::symbol>& inputs_;
+    const std::vector<GiNaC::ex>& inputs_;
     bool share_;
     std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> input_reg_;
     std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
@@ -248,7 +250,7 @@ private:
             auto it = input_reg_.find(e);
             if (it != input_reg_.end()) return it->second;
             std::string names;
-            for (const auto& s : inputs_) names += (names.empty() ? "" : ", ") + s.get_name();
+            for (const auto& s : inputs_) names += (names.empty() ? "" : ", ") + symbol_name(s);
             throw type_error("cannot evaluate numerically: symbol '" + ex_to<symbol>(e).get_name() +
                              "' has no value (inputs: " + (names.empty() ? "none" : names) + ")");
         }
@@ -439,7 +441,7 @@ std::vector<GiNaC::ex> flatten_outputs(const GiNaC::ex& e) {
     return out;
 }
 
-compiled_function compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+compiled_function compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
                           const compile_options& options) {
     program_builder b(inputs, options.share_subexpressions);
     std::vector<std::uint32_t> regs;
@@ -448,7 +450,7 @@ compiled_function compile(const std::vector<GiNaC::ex>& outputs, const std::vect
     return b.finish(regs);
 }
 
-compiled_function compile(const GiNaC::ex& output, const std::vector<GiNaC::symbol>& inputs,
+compiled_function compile(const GiNaC::ex& output, const std::vector<GiNaC::ex>& inputs,
                           const compile_options& options) {
     return compile(flatten_outputs(output), inputs, options);
 }

@@ -145,13 +145,18 @@ struct compile_options {
 /// order in eval()'s input array). Throws symrep::type_error for a symbol that
 /// is not an input, an unsupported function or object; symrep::domain_error
 /// for a complex constant; symrep::type_error for repeated inputs.
+/// The name of a symbol (inputs are passed as ex so that realsymbols are not sliced).
+inline std::string symbol_name(const GiNaC::ex& s) {
+    return GiNaC::is_a<GiNaC::symbol>(s) ? GiNaC::ex_to<GiNaC::symbol>(s).get_name() : std::string("?");
+}
+
 compiled_function compile(const std::vector<GiNaC::ex>& outputs,
-                          const std::vector<GiNaC::symbol>& inputs,
+                          const std::vector<GiNaC::ex>& inputs,
                           const compile_options& options = {});
 
 /// Compile one expression that is a scalar, a GiNaC list (lst) of scalars, or
 /// a matrix (any shape, read row by row, so a 3x1 or 1x3 vector gives 3 outputs).
-compiled_function compile(const GiNaC::ex& output, const std::vector<GiNaC::symbol>& inputs,
+compiled_function compile(const GiNaC::ex& output, const std::vector<GiNaC::ex>& inputs,
                           const compile_options& options = {});
 
 /// The scalars of a scalar, list of scalars or matrix (row by row), in order.

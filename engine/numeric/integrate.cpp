@@ -151,13 +151,13 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
 }
 
 symbolic_system::symbolic_system(const std::vector<GiNaC::ex>& rhs, const GiNaC::symbol& t,
-                                 const std::vector<GiNaC::symbol>& state, const parameter_values& params)
+                                 const std::vector<GiNaC::ex>& state, const parameter_values& params)
     : dim_(state.size()) {
     if (rhs.size() != state.size())
         throw type_error("ode system: " + std::to_string(rhs.size()) + " right-hand side(s) for " +
                          std::to_string(state.size()) + " state variable(s)");
     if (state.empty()) throw type_error("ode system: no state variables");
-    std::vector<GiNaC::symbol> inputs;
+    std::vector<GiNaC::ex> inputs;
     inputs.reserve(1 + state.size() + params.size());
     inputs.push_back(t);
     inputs.insert(inputs.end(), state.begin(), state.end());
@@ -169,14 +169,14 @@ symbolic_system::symbolic_system(const std::vector<GiNaC::ex>& rhs, const GiNaC:
     f_ = compile(rhs, inputs);  // type_error on a symbol without value, repeated symbols, ...
 }
 
-void symbolic_system::set_parameter(const GiNaC::symbol& p, double value) {
+void symbolic_system::set_parameter(const GiNaC::ex& p, double value) {
     for (std::size_t i = 0; i < params_.size(); ++i) {
         if (params_[i].is_equal(p)) {
             param_values_[i] = value;
             return;
         }
     }
-    throw type_error("ode system: '" + p.get_name() + "' is not a parameter of the system");
+    throw type_error("ode system: '" + symbol_name(p) + "' is not a parameter of the system");
 }
 
 rhs_function symbolic_system::function() const {

@@ -89,7 +89,7 @@ integration_result integrate(const rhs_function& f, double t0, const Eigen::Matr
 std::vector<double> linspace(double t0, double t1, std::size_t n_points);
 
 /// Numeric values of parameter symbols.
-using parameter_values = std::vector<std::pair<GiNaC::symbol, double>>;
+using parameter_values = std::vector<std::pair<GiNaC::ex, double>>;
 
 /// A first-order system y' = F(t, y; p) given by symbolic right-hand sides.
 /// rhs[i] is the derivative of state[i]; it may contain t, the state symbols
@@ -98,13 +98,13 @@ using parameter_values = std::vector<std::pair<GiNaC::symbol, double>>;
 class symbolic_system {
 public:
     symbolic_system(const std::vector<GiNaC::ex>& rhs, const GiNaC::symbol& t,
-                    const std::vector<GiNaC::symbol>& state, const parameter_values& params = {});
+                    const std::vector<GiNaC::ex>& state, const parameter_values& params = {});
 
     std::size_t dimension() const { return dim_; }
     const compiled_function& compiled() const { return f_; }
 
     /// Change the value of parameter `p` (symrep::type_error if it is not a parameter).
-    void set_parameter(const GiNaC::symbol& p, double value);
+    void set_parameter(const GiNaC::ex& p, double value);
 
     /// F as an rhs_function. The function holds a copy of the compiled program
     /// and of the current parameter values; it is not safe to call one returned
@@ -113,7 +113,7 @@ public:
 
 private:
     std::size_t dim_ = 0;
-    std::vector<GiNaC::symbol> params_;
+    std::vector<GiNaC::ex> params_;  // symbols kept as ex: a copy would slice a realsymbol
     std::vector<double> param_values_;
     compiled_function f_;
 };

@@ -88,7 +88,7 @@ verify_result verify(const compiled_function& closed_form, const rhs_function& r
 }
 
 verify_result verify(const std::vector<GiNaC::ex>& closed_form, const GiNaC::symbol& t,
-                     const std::vector<GiNaC::ex>& ode_rhs, const std::vector<GiNaC::symbol>& state,
+                     const std::vector<GiNaC::ex>& ode_rhs, const std::vector<GiNaC::ex>& state,
                      const std::vector<double>& initial_state, const parameter_values& params, double t0,
                      double t1, std::size_t n_points, const integration_options& options) {
     auto s = std::chrono::steady_clock::now();

@@ -54,7 +54,7 @@ struct verify_result {
 /// Errors: symrep::type_error for sizes that do not fit or symbols without value
 /// (named), symrep::error when the integration fails.
 verify_result verify(const std::vector<GiNaC::ex>& closed_form, const GiNaC::symbol& t,
-                     const std::vector<GiNaC::ex>& ode_rhs, const std::vector<GiNaC::symbol>& state,
+                     const std::vector<GiNaC::ex>& ode_rhs, const std::vector<GiNaC::ex>& state,
                      const std::vector<double>& initial_state, const parameter_values& params, double t0,
                      double t1, std::size_t n_points, const integration_options& options = {});
 
