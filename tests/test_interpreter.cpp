@@ -271,3 +271,15 @@ TEST(Interpreter, PolynomialAlgebraFromScriptSymbols) {
     EXPECT_TRUE(same(e0.diff(GiNaC::ex_to<GiNaC::symbol>(tt), 3) - 2 * e0.diff(GiNaC::ex_to<GiNaC::symbol>(tt)) + e0, 0));
     EXPECT_TRUE(same(e0.subs(tt == 0), 1));
 }
+
+TEST(Interpreter, ExpectNearComparesListsMatricesAndElements) {
+    test_session t;
+    EXPECT_NO_THROW(t.val("expect_near([1, [2, I]], [1.0000001, [2, I + 1e-9]], 1e-6)"));
+    EXPECT_NO_THROW(t.val("expect_near(matrix([[1, 2]]), matrix([[1, 2.0001]]), 1e-3)"));
+    t.run("A := multicomplex(1)");
+    EXPECT_NO_THROW(t.val("expect_near(element(A, [1, 2, 0, 0]), element(A, [1, 2.0000001, 0, 0]), 1e-3)"));
+    EXPECT_THROW(t.val("expect_near([1, 2], [1, 3], 0.5)"), script_error);   // entry 1 differs
+    EXPECT_THROW(t.val("expect_near([1], [1, 2], 1)"), script_error);        // shapes differ
+    EXPECT_THROW(t.val("expect_near(x, 1, 1)"), script_error);               // not a number
+    EXPECT_THROW(t.val("expect_near(I, 0, 0.5)"), script_error);             // |I - 0| = 1
+}
