@@ -254,3 +254,23 @@ TEST(ApplyFunction, CustomFunction) {
     auto T = truncated_cubic();
     EXPECT_TRUE(same(T->apply_function({1, 2, 3}, sq), T->multiply({1, 2, 3}, {1, 2, 3})));
 }
+
+// The exact zero test compares logarithms of rationals over primes, and the
+// exact exp takes c log(y) out as y^c; both are what exp(log w) == w needs.
+TEST(Scalar, LogarithmsOfRationalsCompareOverPrimes) {
+    using GiNaC::log;
+    EXPECT_TRUE(is_zero_scalar(log(ex(16)) / 2 - log(ex(4))));
+    EXPECT_TRUE(is_zero_scalar(log(GiNaC::sqrt(ex(26))) - log(ex(26)) / 2));
+    EXPECT_TRUE(is_zero_scalar(log(ex(65) / 18 * GiNaC::sqrt(ex(18))) - log(ex(4225) / 18) / 2));
+    EXPECT_TRUE(is_zero_scalar(log(ex(6)) - log(ex(2)) - log(ex(3))));
+    // a large prime cofactor stays one atom and still cancels against itself
+    const ex big = GiNaC::numeric(1000000007L) * 4;
+    EXPECT_TRUE(is_zero_scalar(log(big) - 2 * log(ex(2)) - log(GiNaC::numeric(1000000007L))));
+    // and non-identities stay non-zero
+    EXPECT_FALSE(is_zero_scalar(log(ex(16)) / 2 - log(ex(3))));
+    EXPECT_FALSE(is_zero_scalar(log(ex(6)) - log(ex(2))));
+    EXPECT_FALSE(is_zero_scalar(log(ex(-4)) - 2 * log(ex(-2))));  // not a positive rational: left alone
+    EXPECT_TRUE(is_zero_scalar(exp_scalar(log(ex(26)) / 4) - GiNaC::pow(ex(26), ex(1) / 4)));
+    EXPECT_DOUBLE_EQ(log_modulus(3.0, 4.0), std::log(5.0));
+    EXPECT_TRUE(is_zero_scalar(log_modulus(ex(3), ex(4)) - log(ex(5))));
+}

@@ -544,7 +544,7 @@ TEST(Multicomplex, LogIII_1_53_68_69) {
                 hi += multicomplex_sigma(n, N + k) * multicomplex_walsh(n, N - 1 - k, p) *
                       GiNaC::atan2(c[p].im, c[p].re);
             }
-            EXPECT_TRUE(is_zero_scalar(inv_pow2<ex>(n) * lo - uv[k]));
+            EXPECT_TRUE(is_zero_scalar(inv_pow2<ex>(n) * lo - uv[k])) << (inv_pow2<ex>(n) * lo) << " vs " << uv[k];
             EXPECT_TRUE(is_zero_scalar(inv_pow2<ex>(n) * hi - uv[N + k]));
         }
     }

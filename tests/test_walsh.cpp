@@ -46,7 +46,7 @@ coeffs rational(std::size_t N, unsigned seed) {
     return c;
 }
 
-bool same(const ex& p, const ex& q) { return GiNaC::normal(GiNaC::expand(p - q)).is_zero(); }
+bool same(const ex& p, const ex& q) { return is_zero_scalar(GiNaC::expand(p - q)); }
 
 bool close(const coeffs& a, const coeffs& b, double tol = 1e-12) {
     if (a.size() != b.size()) return false;

@@ -151,38 +151,6 @@ std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::strin
     return roots;
 }
 
-// e^x with the terms c log(y) of x taken out as y^c, so that exp(log w) gives
-// back w's rational coordinates (GiNaC leaves exp(log(2)/2) unevaluated).
-bool is_log(const ex& u) {
-    return GiNaC::is_a<GiNaC::function>(u) && GiNaC::ex_to<GiNaC::function>(u).get_name() == "log";
-}
-
-ex exp_of(const ex& x) {
-    const ex e = GiNaC::expand(x);
-    ex rest = 0, pre = 1;
-    auto term = [&](const ex& u) {
-        if (is_log(u)) {
-            pre *= u.op(0);
-            return;
-        }
-        if (GiNaC::is_a<GiNaC::mul>(u) && u.nops() == 2) {
-            for (int i = 0; i < 2; ++i) {
-                const ex a = u.op(i), b = u.op(1 - i);
-                if (GiNaC::is_a<GiNaC::numeric>(b) && is_log(a)) {
-                    pre *= GiNaC::pow(a.op(0), b);
-                    return;
-                }
-            }
-        }
-        rest += u;
-    };
-    if (GiNaC::is_a<GiNaC::add>(e))
-        for (std::size_t i = 0; i < e.nops(); ++i) term(e.op(i));
-    else
-        term(e);
-    return pre * GiNaC::exp(rest);
-}
-
 // Falling factorial k (k-1) ... (k-j+1).
 long falling(long k, unsigned j) {
     long r = 1;
@@ -245,7 +213,7 @@ coeffs algebra::exp(const coeffs& w, const ex& t) const {
     scalar_function f;
     f.name = "exp";
     f.value = [t](const ex& re, const ex& im, unsigned j, ex& out_re, ex& out_im) {
-        const ex tj = GiNaC::pow(t, j) * exp_of(re * t);
+        const ex tj = GiNaC::pow(t, j) * exp_scalar(re * t);
         if (im.is_zero()) {
             out_re = tj;
             out_im = 0;

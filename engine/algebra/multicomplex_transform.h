@@ -130,9 +130,8 @@ typename multicomplex_complex<T>::type multicomplex_component_inverse(const T& a
 template <class T>
 typename multicomplex_complex<T>::type multicomplex_component_exp(const T& a, const T& b, const T& t) {
     using std::cos;
-    using std::exp;
     using std::sin;
-    const T e = exp(a * t);
+    const T e = exp_scalar(a * t);
     return multicomplex_complex<T>::make(e * cos(b * t), e * sin(b * t));
 }
 
@@ -152,8 +151,7 @@ inline double multicomplex_argument(double a, double b) { return std::atan2(b, a
 /// (III.1.53) principal logarithm log r + i atan2(b, a); the caller excludes xi = 0.
 template <class T>
 typename multicomplex_complex<T>::type multicomplex_component_log(const T& a, const T& b) {
-    using std::log;
-    return multicomplex_complex<T>::make(log(multicomplex_modulus(a, b)), multicomplex_argument(a, b));
+    return multicomplex_complex<T>::make(log_modulus(a, b), multicomplex_argument(a, b));
 }
 
 }  // namespace symrep

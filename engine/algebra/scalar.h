@@ -15,8 +15,61 @@
 
 namespace symrep {
 
-/// Exact zero test: true when the expression normalizes to 0.
-inline bool is_zero_scalar(const GiNaC::ex& x) { return x.is_zero() || GiNaC::normal(x).is_zero(); }
+/// Logarithms of products of powers of positive rationals written over primes:
+/// log(c b^e) -> log(c) + e log(b), log(p1^k1 ... / q1^l1 ...) -> k1 log(p1) + ... - l1 log(q1) - ...
+/// (prime factors below 2^16 are split off; a larger cofactor stays one atom).
+/// Two sums of such logarithms are equal iff their expanded forms agree, so the
+/// zero test sees log(16)/2 = log(4) = 2 log(2).
+inline GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
+    struct expand_logs : GiNaC::map_function {
+        static GiNaC::ex log_of_integer(GiNaC::numeric N) {
+            GiNaC::ex out = 0;
+            for (long p = 2; p < 65536 && N > 1; ++p) {
+                if (GiNaC::numeric(p) * p > N) break;
+                int k = 0;
+                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
+                if (k) out += k * GiNaC::log(GiNaC::ex(p));
+            }
+            if (N > 1) out += GiNaC::log(GiNaC::ex(N));
+            return out;
+        }
+        static bool is_positive_rational(const GiNaC::ex& x) {
+            return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
+                   GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
+        }
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1 ||
+                GiNaC::ex_to<GiNaC::function>(y).get_name() != "log")
+                return y;
+            // the argument as a product of factors b^k, b a positive rational, k rational
+            const GiNaC::ex a = y.op(0);
+            GiNaC::ex out = 0;
+            for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(a) ? a.nops() : 1); ++i) {
+                GiNaC::ex b = GiNaC::is_a<GiNaC::mul>(a) ? a.op(i) : a, k = 1;
+                if (GiNaC::is_a<GiNaC::power>(b) && GiNaC::is_a<GiNaC::numeric>(b.op(1)) &&
+                    GiNaC::ex_to<GiNaC::numeric>(b.op(1)).is_rational()) {
+                    k = b.op(1);
+                    b = b.op(0);
+                }
+                if (!is_positive_rational(b)) return y;
+                const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(b);
+                out += k * (log_of_integer(r.numer()) - log_of_integer(r.denom()));
+            }
+            return out;
+        }
+    } m;
+    return m(e);
+}
+
+/// Exact zero test: true when the expression normalizes to 0 (logarithms of
+/// rational numbers are compared over primes first).
+inline bool is_zero_scalar(const GiNaC::ex& x) {
+    if (x.is_zero()) return true;
+    if (GiNaC::normal(x).is_zero()) return true;
+    if (!x.has(GiNaC::log(GiNaC::wild()))) return false;
+    return GiNaC::normal(expand_rational_logs(x)).is_zero();
+}
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
 
@@ -77,6 +130,47 @@ inline std::string message_text(const GiNaC::ex& e, std::size_t max = 160) {
             std::to_string(s.size()) + " characters)";
     return s;
 }
+
+/// log |a + i b|: exact as log(a^2 + b^2)/2, so that the logarithms of one
+/// number combine (log(26)/2, never log(sqrt(26))); double through hypot, which
+/// does not overflow.
+inline GiNaC::ex log_modulus(const GiNaC::ex& a, const GiNaC::ex& b) {
+    return GiNaC::log(tidy(a * a + b * b)) / 2;
+}
+inline double log_modulus(double a, double b) { return std::log(std::hypot(a, b)); }
+
+/// e^x, exact with the terms c log(y) of x taken out as y^c, so that exp(log w)
+/// gives back rational coordinates (GiNaC leaves exp(log(2)/2) unevaluated);
+/// std::exp on the double path.
+inline GiNaC::ex exp_scalar(const GiNaC::ex& x) {
+    const auto is_log = [](const GiNaC::ex& u) {
+        return GiNaC::is_a<GiNaC::function>(u) && GiNaC::ex_to<GiNaC::function>(u).get_name() == "log";
+    };
+    const GiNaC::ex e = GiNaC::expand(x);
+    GiNaC::ex rest = 0, pre = 1;
+    auto term = [&](const GiNaC::ex& u) {
+        if (is_log(u)) {
+            pre *= u.op(0);
+            return;
+        }
+        if (GiNaC::is_a<GiNaC::mul>(u) && u.nops() == 2) {
+            for (int i = 0; i < 2; ++i) {
+                const GiNaC::ex a = u.op(i), b = u.op(1 - i);
+                if (GiNaC::is_a<GiNaC::numeric>(b) && is_log(a)) {
+                    pre *= GiNaC::pow(a.op(0), b);
+                    return;
+                }
+            }
+        }
+        rest += u;
+    };
+    if (GiNaC::is_a<GiNaC::add>(e))
+        for (std::size_t i = 0; i < e.nops(); ++i) term(e.op(i));
+    else
+        term(e);
+    return pre * GiNaC::exp(rest);
+}
+inline double exp_scalar(double x) { return std::exp(x); }
 
 /// Scalar from an integer, for both paths.
 template <class T> T from_int(long k) { return T(k); }

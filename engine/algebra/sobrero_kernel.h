@@ -102,7 +102,7 @@ seq<T> exp(const seq<T>& x, const T& t) {
         c[k] = cplx<T>(coef, from_int<T>(0));
     }
     const seq<T> s = nilpotent_series(nilpotent_part(x), c);
-    const T ea = exp(x[0].re * t);
+    const T ea = exp_scalar(x[0].re * t);
     const cplx<T> e0(tidy(ea * cos(x[0].im * t)), tidy(ea * sin(x[0].im * t)));
     return scale(e0, s);
 }
@@ -111,9 +111,7 @@ seq<T> exp(const seq<T>& x, const T& t) {
 template <class T>
 cplx<T> log_scalar(const cplx<T>& z) {
     using std::atan2;
-    using std::log;
-    using std::sqrt;
-    return cplx<T>(tidy(log(sqrt(z.norm2()))), tidy(atan2(z.im, z.re)));
+    return cplx<T>(tidy(log_modulus(z.re, z.im)), tidy(atan2(z.im, z.re)));
 }
 
 // log w = log xi_0 + sum_{k=1}^{n} (-1)^{k+1} (N/xi_0)^k / k, for xi_0 != 0.

@@ -162,7 +162,7 @@ coeffs walsh::inverse(const coeffs& w) const {
 // (III.3.44) exp(f t) = 2^{-n} sum_p [sum_k (-1)^{<p,k>} e^{a_k t}] w_p.
 coeffs walsh::exp(const coeffs& w, const ex& t) const {
     std::vector<ex> a = idempotent_components(w);
-    for (auto& x : a) x = GiNaC::exp(tidy(x * t));
+    for (auto& x : a) x = exp_scalar(tidy(x * t));
     return wm::from_components(std::move(a));
 }
 

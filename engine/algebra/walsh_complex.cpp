@@ -171,7 +171,7 @@ coeffs walsh_complex::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
     std::vector<cx> y = wm::complex_components(w);
     for (auto& z : y) {
-        const ex e = GiNaC::exp(tidy(z.re * t));
+        const ex e = exp_scalar(tidy(z.re * t));
         z = cx(e * GiNaC::cos(tidy(z.im * t)), e * GiNaC::sin(tidy(z.im * t)));
     }
     return wm::from_complex_components(std::move(y));
@@ -184,7 +184,7 @@ coeffs walsh_complex::log(const coeffs& w) const {
     const auto r = ranks_of(y);
     if (!r.empty()) throw_zero_divisor(name(), "log", r);
     for (auto& z : y)
-        z = cx(tidy(GiNaC::log(GiNaC::sqrt(z.norm2()))), tidy(GiNaC::atan2(z.im, z.re)));
+        z = cx(tidy(log_modulus(z.re, z.im)), tidy(GiNaC::atan2(z.im, z.re)));
     return wm::from_complex_components(std::move(y));
 }
 
