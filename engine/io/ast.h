@@ -18,13 +18,14 @@ struct node {
         boolean,   ///< text: "true" / "false"
         ident,     ///< text: the name
         unary,     ///< text: "-" or "+"; kids[0]
-        binary,    ///< text: ^ = == != < > <= >=; kids[0], kids[1]
+        binary,    ///< text: ^ = == != < > <= >=, x (cross), . (dot); kids[0], kids[1]
         chain,     ///< a run of + - (or * /), left to right: kids[0] op[0] kids[1] op[1] ...;
                    ///< text holds one operator character per step, op_pos their places
         call,      ///< text: the function name; kids: the arguments
         index,     ///< kids[0][kids[1]]
         list,      ///< kids: the entries
         assign,    ///< text: the variable; kids[0]: the value
+        declare,   ///< text: "vector" or "positive"; kids: the declared names (ident nodes)
     };
     kind_t kind;
     std::string text;

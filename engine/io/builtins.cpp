@@ -15,7 +15,8 @@ std::string value::kind() const {
         case 3: return "string";
         case 4: return "list";
         case 5: return "algebra";
-        default: return "element";
+        case 6: return "element";
+        default: return "problem";
     }
 }
 

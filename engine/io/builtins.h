@@ -78,5 +78,9 @@ void register_sobrero_builtins(registry& r);      // io/builtins_sobrero.cpp
 void register_walsh_builtins(registry& r);        // io/builtins_walsh.cpp
 void register_polynomial_builtins(registry& r);   // io/builtins_polynomial.cpp
 void register_check_builtins(registry& r);        // io/builtins_check.cpp: expect, expect_near
+void register_mechanics_builtins(registry& r);    // io/builtins_mechanics.cpp: ode, check, eval, verify
+
+/// solve(P) for a problem made by ode(...): the exact solution (io/builtins_mechanics.cpp).
+value solve_problem(const value& p);
 
 }  // namespace symrep::lang

@@ -234,9 +234,18 @@ void register_core_builtins(registry& r) {
             if (!is_a<GiNaC::relational>(e)) throw type_error(b.name + ": argument 1 must be a relation");
             return value(e.op(1));
         });
-    add(r, "solve", "solve([equations], [x, y, ...])",
-        "Solves a system of linear equations for the given symbols; returns the list of solutions [x = ..., ...].",
-        "", "solve([x + y = 3, x - y = 1], [x, y])", 2, 2, [](const builtin& b, const args_t& a, context&) {
+    add(r, "solve", "solve([equations], [x, y, ...])  |  solve(P)",
+        "Solves a system of linear equations for the given symbols; returns the list of solutions [x = ..., ...]. "
+        "With a problem P made by ode(...), returns its exact solution x(t) in coordinate-free form: "
+        "sum over the data vectors P of c0(t) P + c1(t) w x P + c2(t) w x (w x P), derived in the algebra of "
+        "K = w x (R + C, idempotents (w . x) w/|w|^2 and -w x (w x x)/|w|^2).",
+        "(VI.1.13-15), (VI.1.26-38), (VI.1.81)", "solve([x + y = 3, x - y = 1], [x, y])", 1, 2,
+        [](const builtin& b, const args_t& a, context&) {
+            if (a[0].is_problem()) {
+                if (a.size() != 1) throw type_error(b.name + ": solve(P) takes the problem only");
+                return solve_problem(a[0]);
+            }
+            if (a.size() != 2) throw type_error(b.name + ": expects 2 arguments, got 1 (usage: " + b.signature + ")");
             const GiNaC::lst eqs = relations(a[0], b, 0);
             GiNaC::lst vars;
             if (a[1].is_list()) {

@@ -2,6 +2,7 @@
 #include "io/interpreter.h"
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "algebra/scalar.h"
 #include "io/parser.h"
 #include "io/printer.h"
+#include "vector/vector.h"
 
 namespace symrep::lang {
 
@@ -145,10 +147,29 @@ value negate(const value& a) {
     throw type_error("cannot negate " + article(a));
 }
 
+namespace {
+// A list of three expressions used with vectors is the literal [x, y, z].
+bool is_triple(const value& v) {
+    return v.is_list() && v.as_list().size() == 3 &&
+           std::all_of(v.as_list().begin(), v.as_list().end(), [](const value& e) { return e.is_ex(); });
+}
+ex as_literal(const value& v) {
+    const list& l = v.as_list();
+    return vector_literal(l[0].as_ex(), l[1].as_ex(), l[2].as_ex());
+}
+bool is_vector_ex(const value& v) { return v.is_ex() && !vector_symbols(v.as_ex()).empty(); }
+ex vector_operand(const std::string& op, const value& v, const char* side) {
+    if (v.is_ex()) return v.as_ex();
+    if (is_triple(v)) return as_literal(v);
+    throw type_error("the " + std::string(side) + " operand of '" + op + "' must be a vector, not " + article(v));
+}
+}  // namespace
+
 bool values_equal(const value& a, const value& b) {
     if (a.is_ex() && b.is_ex()) {
         const ex& x = a.as_ex();
         const ex& y = b.as_ex();
+        if (is_vector_ex(a) || is_vector_ex(b)) return symrep::equal(x, y);  // exact, by components
         if (is_a<GiNaC::matrix>(x) || is_a<GiNaC::matrix>(y)) {
             if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return false;
             const auto& m = ex_to<GiNaC::matrix>(x);
@@ -190,7 +211,23 @@ bool values_equal(const value& a, const value& b) {
     return false;
 }
 
+
 value binary_op(const std::string& op, const value& a, const value& b) {
+    // vectors (thesis Ch. VI): a x b, a . b; [x, y, z] next to a vector is a literal
+    if (op == "x" || op == ".") {
+        const ex u = vector_operand(op, a, "left"), v = vector_operand(op, b, "right");
+        return op == "x" ? cross(u, v) : dot(u, v);
+    }
+    if ((op == "+" || op == "-" || op == "=") && ((is_vector_ex(a) && is_triple(b)) || (is_triple(a) && is_vector_ex(b))))
+        return binary_op(op, a.is_list() ? value(as_literal(a)) : a, b.is_list() ? value(as_literal(b)) : b);
+    if (op == "=" && a.is_ex() && is_triple(b))
+        return ex(GiNaC::relational(a.as_ex(), as_literal(b), GiNaC::relational::equal));
+    if (op == "=" && a.is_ex() && b.is_list() &&
+        std::all_of(b.as_list().begin(), b.as_list().end(), [](const value& e) { return e.is_ex(); })) {
+        GiNaC::lst l;  // t = [0, 1, 2, 5]: a list of values
+        for (const value& e : b.as_list()) l.append(e.as_ex());
+        return ex(GiNaC::relational(a.as_ex(), l, GiNaC::relational::equal));
+    }
     if (op == "==") return values_equal(a, b);
     if (op == "!=") return !values_equal(a, b);
     if (op == "=") {
@@ -212,7 +249,11 @@ value binary_op(const std::string& op, const value& a, const value& b) {
         return ex(R(a.as_ex(), b.as_ex(), o));
     }
     // expressions
-    if (a.is_ex() && b.is_ex()) return ex_binary(op, a.as_ex(), b.as_ex());
+    if (a.is_ex() && b.is_ex()) {
+        ex r = ex_binary(op, a.as_ex(), b.as_ex());
+        if (is_vector_ex(a) || is_vector_ex(b)) (void)is_vector(r);  // w + 1, w*w, w^2: type_error
+        return r;
+    }
     // elements
     if (a.is_element() && b.is_element()) {
         const element& x = a.as_element();
@@ -378,7 +419,136 @@ value session::evaluate(const std::string& text) {
     return last;
 }
 
+// vector a, b: a and b are vectors from now on (thesis Ch. VI);
+// positive k: k is a positive real symbol from now on (earlier expressions keep
+// the real symbol they were built with).
+void session::declare(const node& n) {
+    for (const auto& k : n.kids) {
+        if (get(k->text))
+            throw script_error("cannot declare '" + k->text + "': it is a variable (assigned with :=)",
+                               {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+        if (n.text == "vector") {
+            register_vector(symbol(k->text));
+        } else {
+            if (is_vector_symbol(symbol(k->text)))
+                throw script_error("cannot declare '" + k->text + "' positive: it is a vector",
+                                   {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+            symbols_[k->text] = GiNaC::possymbol(k->text);
+        }
+    }
+}
+
+// ode(EQUATION, x(0) = X0, x'(0) = X1, ...): the unknown x is a function of t;
+// it is a vector when an initial value is. The equation is evaluated with x,
+// x', ... bound to the unknown and its derivatives.
+value session::ode_form(const node& n) {
+    const std::string usage = " (usage: ode(x'' + a x' + b x = f, x(0) = x0, x'(0) = v0))";
+    auto where = [&](const node& k) {
+        return source_location{files_.empty() ? "<string>" : files_.back(), k.line, k.column};
+    };
+    if (n.kids.size() < 2) throw type_error("ode: expects an equation and initial conditions" + usage);
+    const node& eq = *n.kids[0];
+    if (eq.kind != node::binary || eq.text != "=")
+        throw script_error("ode: the first argument must be an equation lhs = rhs" + usage, where(eq));
+    mechanics::cauchy_problem P;
+    std::vector<bool> seen;
+    std::vector<value> init;
+    for (std::size_t i = 1; i < n.kids.size(); ++i) {
+        const node& c = *n.kids[i];
+        if (c.kind != node::binary || c.text != "=" || c.kids[0]->kind != node::call || c.kids[0]->kids.size() != 1)
+            throw script_error("ode: argument " + std::to_string(i + 1) + " must be an initial condition such as " +
+                                   "x(0) = x0 or x'(0) = v0" + usage, where(c));
+        const std::string& f = c.kids[0]->text;
+        std::size_t k = 0;  // the number of primes
+        while (k < f.size() && f[f.size() - 1 - k] == '\'') ++k;
+        const std::string base = f.substr(0, f.size() - k);
+        if (P.name.empty()) P.name = base;
+        if (base != P.name)
+            throw script_error("ode: initial conditions for two functions, " + P.name + " and " + base, where(c));
+        const value t0 = eval(*c.kids[0]->kids[0]);
+        if (!t0.is_ex() || !t0.as_ex().is_zero())
+            throw script_error("ode: initial conditions are given at t = 0", where(*c.kids[0]->kids[0]));
+        if (k >= seen.size()) { seen.resize(k + 1, false); init.resize(k + 1); }
+        if (seen[k]) throw script_error("ode: " + f + "(0) is given twice", where(c));
+        seen[k] = true;
+        init[k] = eval(*c.kids[1]);
+    }
+    for (std::size_t k = 0; k < seen.size(); ++k)
+        if (!seen[k])
+            throw type_error("ode: the initial condition " + P.name + std::string(k, '\'') + "(0) is missing" + usage);
+    P.t = symbol("t");
+    if (P.name == "t") throw type_error("ode: the unknown cannot be named t (t is the independent variable)");
+    for (const value& v : init)
+        if (!v.is_ex() && !is_triple(v))
+            throw type_error("ode: an initial value must be an expression or a vector, not " + article(v));
+    P.is_vector = false;
+    for (const value& v : init)
+        if ((v.is_ex() && is_vector(v.as_ex())) || v.is_list()) P.is_vector = true;
+    for (const value& v : init) {
+        const ex e = v.is_list() ? vector_operand("ode", v, "initial") : v.as_ex();
+        if (P.is_vector && !e.is_zero() && !is_vector(e))
+            throw type_error("ode: the initial values mix vectors and scalars: " + print_ex(e));
+        P.initial.push_back(e);
+    }
+    // the unknown and its derivatives: the order of the equation is the number of conditions
+    const std::size_t M = init.size();
+    if (P.is_vector) {
+        GiNaC::ex x = GiNaC::realsymbol(P.name);
+        register_vector_function(x, P.t);
+        P.unknowns.push_back(x);
+        for (std::size_t m = 1; m <= M; ++m) P.unknowns.push_back(derivative(P.unknowns.back()));
+    } else {
+        for (std::size_t m = 0; m <= M; ++m) P.unknowns.push_back(GiNaC::realsymbol(P.unknown_name(m)));
+    }
+    // a derivative of higher order than the conditions allow is an error at its place
+    std::function<void(const node&)> scan = [&](const node& k) {
+        if (k.kind == node::ident && k.text.size() > P.name.size() + M && k.text.rfind(P.name, 0) == 0 &&
+            k.text.find_first_not_of('\'', P.name.size()) == std::string::npos)
+            throw script_error("ode: " + k.text + " appears, but " + std::to_string(M) + " initial condition" +
+                                   (M == 1 ? "" : "s") + " make an equation of order " + std::to_string(M),
+                               where(k));
+        for (const auto& c : k.kids) scan(*c);
+    };
+    scan(eq);
+    // bind x, x', ... while the equation is evaluated
+    std::map<std::string, std::optional<value>> saved;
+    for (std::size_t m = 0; m <= M; ++m) {
+        const std::string nm = P.unknown_name(m);
+        const value* old = get(nm);
+        saved[nm] = old ? std::optional<value>(*old) : std::nullopt;
+        vars_[nm] = value(P.unknowns[m]);
+    }
+    auto restore = [&] {
+        for (auto& [nm, v] : saved) {
+            if (v) vars_[nm] = *v;
+            else vars_.erase(nm);
+        }
+    };
+    value lhs, rhs;
+    try {
+        lhs = eval(*eq.kids[0]);
+        rhs = eval(*eq.kids[1]);
+    } catch (...) {
+        restore();
+        throw;
+    }
+    restore();
+    const value E = binary_op("-", lhs, rhs);
+    if (!E.is_ex())
+        throw script_error("ode: the equation must be between expressions, not " + article(lhs) + " and " +
+                               article(rhs), where(eq));
+    P.expression = E.as_ex();
+    if (P.is_vector && !E.as_ex().is_zero() && !is_vector(E.as_ex()))
+        throw script_error("ode: the equation is scalar but the initial values are vectors", where(eq));
+    (void)mechanics::reduce(P);  // the problem is checked now: errors point at ode(...)
+    return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
+}
+
 void session::exec(const node& stmt, bool echo) {
+    if (stmt.kind == node::declare) {
+        declare(stmt);
+        return;
+    }
     if (stmt.kind == node::assign) {
         value v = eval(*stmt.kids[0]);
         if (v.is_none())
@@ -454,6 +624,7 @@ value session::call(const node& n) {
         }
         throw type_error(msg);
     }
+    if (b->name == "ode") return ode_form(n);
     // seq(e, k, ...) and sum(e, k, ...) evaluate e once per value of k (so that
     // seq(diff(f, x, k), k, 0, 3) sees k as a number, not as a symbol).
     if ((b->name == "seq" || b->name == "sum") && (n.kids.size() == 3 || n.kids.size() == 4) &&
@@ -585,6 +756,8 @@ value session::eval_inner(const node& n) {
         }
         case node::assign:
             throw type_error("an assignment ':=' is a statement, not an expression");
+        case node::declare:
+            throw type_error("a declaration is a statement, not an expression");
     }
     throw type_error("unknown syntax node");
 }

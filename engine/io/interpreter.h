@@ -86,6 +86,8 @@ private:
     value eval_inner(const node& n);
     value call(const node& n);
     value iterate(const builtin& b, const node& n);
+    void declare(const node& n);
+    value ode_form(const node& n);
     void report(const source_location& where, const std::string& msg);
     void exec(const node& stmt, bool echo);
 

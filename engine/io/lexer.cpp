@@ -77,6 +77,7 @@ std::vector<token> tokenize(const std::string& text) {
         if (ident_start(c)) {
             std::string t;
             while (ident_char(sc.peek())) t += sc.get();
+            while (sc.peek() == '\'') t += sc.get();  // r', r'': derivatives (VI)
             push(tok::ident, t, l, co);
             continue;
         }
@@ -118,7 +119,7 @@ std::vector<token> tokenize(const std::string& text) {
         switch (c) {
             case '(': case '[': ++depth; push(tok::op, std::string(1, c), l, co); break;
             case ')': case ']': if (depth > 0) --depth; push(tok::op, std::string(1, c), l, co); break;
-            case '+': case '-': case '*': case '/': case '^': case ',': case '=': case '<': case '>':
+            case '+': case '-': case '*': case '/': case '^': case ',': case '=': case '<': case '>': case '.':
                 push(tok::op, std::string(1, c), l, co);
                 break;
             default: {

@@ -14,9 +14,9 @@ namespace symrep::lang {
 
 enum class tok {
     number,      ///< 12, 3.5, 1e-3 (text in `text`)
-    ident,       ///< names: letters, digits, '_' (not first digit)
+    ident,       ///< names: letters, digits, '_' (not first digit), then primes: r, r', r''
     string,      ///< "..." (unescaped text in `text`)
-    op,          ///< + - * / ^ ( ) [ ] , := = == != < > <= >=
+    op,          ///< + - * / ^ ( ) [ ] , . := = == != < > <= >= (the cross product 'x' is an ident)
     separator,   ///< newline or ';' outside brackets
     error,       ///< malformed input; message in `text`
     end,         ///< end of input

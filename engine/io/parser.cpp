@@ -66,7 +66,10 @@ node_ptr parser::next_statement() {
     while (peek().kind == tok::separator) get();
     if (peek().kind == tok::end) return nullptr;
     node_ptr s;
-    if (peek().kind == tok::ident && is_op(":=", 1)) {
+    if (peek().kind == tok::ident && (peek().text == "vector" || peek().text == "positive") &&
+        peek(1).kind == tok::ident) {
+        s = declaration();
+    } else if (peek().kind == tok::ident && is_op(":=", 1)) {
         const token& name = get();
         const token& op = get();
         s = make(node::assign, op, name.text);
@@ -128,7 +131,7 @@ node_ptr parser::sum() {
 }
 
 node_ptr parser::product() {
-    node_ptr a = unary();
+    node_ptr a = vector_product();
     if (!is_op("*") && !is_op("/")) return a;
     node_ptr n = make(node::chain, peek());
     n->kids.push_back(std::move(a));
@@ -136,7 +139,48 @@ node_ptr parser::product() {
         const token& op = get();
         n->text += op.text;
         n->op_pos.emplace_back(op.line, op.column);
-        n->kids.push_back(unary());
+        n->kids.push_back(vector_product());
+    }
+    return n;
+}
+
+// a x b and a . b bind tighter than * and /, and group to the right, so that
+// w x w x r reads w x (w x r) as in the thesis. The name x is the cross
+// product only between two operands (where no name could stand).
+node_ptr parser::vector_product() {
+    node_ptr a = unary();
+    const token& t = peek();
+    const bool cross = t.kind == tok::ident && t.text == "x";
+    if (!cross && !is_op(".")) return a;
+    if (cross) {
+        const token& u = peek(1);
+        const bool operand = u.kind == tok::ident || u.kind == tok::number ||
+                             (u.kind == tok::op && (u.text == "(" || u.text == "["));
+        if (!operand) return a;
+    }
+    const token& op = get();
+    node_ptr n = make(node::binary, op, cross ? "x" : ".");
+    n->kids.push_back(std::move(a));
+    if (++depth_ > 2000) fail(peek(), "expression nested too deeply (more than 2000 levels)");
+    n->kids.push_back(vector_product());
+    --depth_;
+    return n;
+}
+
+// vector a, b, c   /   positive w0, g
+node_ptr parser::declaration() {
+    const token& kw = get();
+    node_ptr n = make(node::declare, kw, kw.text);
+    for (;;) {
+        const token& name = peek();
+        if (name.kind != tok::ident)
+            fail(name, "expected a name to declare after '" + kw.text + "', found " + describe(name));
+        if (name.text.find('\'') != std::string::npos)
+            fail(name, "cannot declare '" + name.text + "': primes name derivatives");
+        get();
+        n->kids.push_back(make(node::ident, name, name.text));
+        if (!is_op(",")) break;
+        get();
     }
     return n;
 }

@@ -44,6 +44,8 @@ private:
     node_ptr expr();
     node_ptr sum();
     node_ptr product();
+    node_ptr vector_product();
+    node_ptr declaration();
     node_ptr unary();
     node_ptr power();
     node_ptr postfix();

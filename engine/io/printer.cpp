@@ -1,6 +1,8 @@
 // symrep/io/printer.cpp -- canonical printing (see printer.h for the rules).
 #include "io/printer.h"
 
+#include "vector/vector.h"
+
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -393,7 +395,22 @@ std::string quote(const std::string& s) {
 
 }  // namespace
 
-std::string print_ex(const ex& e) { return pr(e).text; }
+// Vector expressions (thesis Ch. VI) print in the thesis notation of vector.h.
+bool involves_vectors(const ex& e) {
+    if (is_vector_symbol(e) || is_ex_the_function(e, vcross) || is_ex_the_function(e, vdot) ||
+        is_ex_the_function(e, vtriple))
+        return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (involves_vectors(e.op(i))) return true;
+    return false;
+}
+
+std::string print_ex(const ex& e) {
+    if (!is_a<GiNaC::relational>(e) && involves_vectors(e)) return symrep::to_string(e);
+    if (is_a<GiNaC::relational>(e) && (involves_vectors(e.op(0)) || involves_vectors(e.op(1))))
+        return print_ex(e.op(0)) + " = " + print_ex(e.op(1));
+    return pr(e).text;
+}
 
 std::string print_element(const element& w) {
     std::string s;
@@ -452,6 +469,13 @@ std::string print_value(const value& v, bool quote_strings) {
         return s + "]";
     }
     if (v.is_algebra()) return v.as_algebra()->name();
+    if (v.is_problem()) {
+        const mechanics::cauchy_problem& P = v.as_problem();
+        std::string s = "ode(" + print_ex(P.expression) + " = 0";
+        for (std::size_t m = 0; m < P.initial.size(); ++m)
+            s += ", " + P.unknown_name(m) + "(0) = " + print_ex(P.initial[m]);
+        return s + ")";
+    }
     return print_element(v.as_element());
 }
 

@@ -1,8 +1,9 @@
 // symrep/io/value.h -- the values of the symrep language.
 //
 // A value is one of: nothing (a statement with no result), a boolean, a GiNaC
-// expression (numbers, symbols, formulas, relations `a = b`), a string, a list,
-// an algebra, or an element of an algebra. Values are immutable and cheap to copy.
+// expression (numbers, symbols, formulas, relations `a = b`, vector expressions),
+// a string, a list, an algebra, an element of an algebra, or a Cauchy problem
+// (`ode(...)`). Values are immutable and cheap to copy.
 #pragma once
 
 #include <memory>
@@ -13,15 +14,17 @@
 #include <ginac/ginac.h>
 
 #include "algebra/element.h"
+#include "mechanics/cauchy_problem.h"
 
 namespace symrep::lang {
 
 struct value;
 using list = std::vector<value>;
+using problem_ptr = std::shared_ptr<const mechanics::cauchy_problem>;
 
 struct value {
     using variant_t = std::variant<std::monostate, bool, GiNaC::ex, std::string,
-                                   std::shared_ptr<const list>, algebra_ptr, element>;
+                                   std::shared_ptr<const list>, algebra_ptr, element, problem_ptr>;
     variant_t v;
 
     value() = default;
@@ -34,6 +37,7 @@ struct value {
     value(list l) : v(std::make_shared<const list>(std::move(l))) {}
     value(algebra_ptr A) : v(std::move(A)) {}
     value(element w) : v(std::move(w)) {}
+    value(problem_ptr p) : v(std::move(p)) {}
 
     bool is_none() const { return std::holds_alternative<std::monostate>(v); }
     bool is_bool() const { return std::holds_alternative<bool>(v); }
@@ -42,6 +46,7 @@ struct value {
     bool is_list() const { return std::holds_alternative<std::shared_ptr<const list>>(v); }
     bool is_algebra() const { return std::holds_alternative<algebra_ptr>(v); }
     bool is_element() const { return std::holds_alternative<element>(v); }
+    bool is_problem() const { return std::holds_alternative<problem_ptr>(v); }
 
     bool as_bool() const { return std::get<bool>(v); }
     const GiNaC::ex& as_ex() const { return std::get<GiNaC::ex>(v); }
@@ -49,8 +54,9 @@ struct value {
     const list& as_list() const { return *std::get<std::shared_ptr<const list>>(v); }
     const algebra_ptr& as_algebra() const { return std::get<algebra_ptr>(v); }
     const element& as_element() const { return std::get<element>(v); }
+    const mechanics::cauchy_problem& as_problem() const { return *std::get<problem_ptr>(v); }
 
-    /// "nothing", "boolean", "expression", "string", "list", "algebra", "element".
+    /// "nothing", "boolean", "expression", "string", "list", "algebra", "element", "problem".
     std::string kind() const;
 };
 

@@ -1,0 +1,77 @@
+// symrep/mechanics/cauchy_problem.h -- a linear Cauchy problem for a vector
+// (or scalar) function of t, as a user writes it, and its exact solution by
+// the operator solver (thesis VI.1.26-38, 47-57, 62-67, 68-86).
+//
+// The problem is   E(x, x', ..., x^(M), t) = 0,   x^(m)(0) = X_m  (m < M),
+// with E linear in the unknowns x^(m). Its operator part must be a polynomial
+// in one operator K = w x (w a constant vector symbol, the same in every term):
+// each term is a scalar times x^(m), w x x^(m), w x (w x x^(m)) or w (w . x^(m))
+// (= K^2 x^(m) + |w|^2 x^(m)). Its free part (the terms without an unknown)
+// must be a sum of quasi-polynomials in t (t^k e^(a t) cos(b t), sin(b t))
+// times constant vectors. Nothing else is assumed: the orders, the
+// coefficients (symbolic or numeric) and the forcing are read from E.
+//
+// reduce() reads E into the operator form of operator_ode.h (the algebra of K,
+// R + C, thesis Ch. II-III applied to Ch. VI); solve() solves it there and
+// recombines   x(t) = sum_P c_0(t) P + c_1(t) w x P + c_2(t) w x (w x P)
+// over the data vectors P (initial values, forcing vectors) in coordinate-free
+// form, with |w| for Omega. check() substitutes a solution back: the residual
+// and the initial differences, each exactly 0 for a solution.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "mechanics/operator_ode.h"
+
+namespace symrep::mechanics {
+
+struct cauchy_problem {
+    std::string name;                  ///< the unknown's name, e.g. "r"
+    GiNaC::ex t;                       ///< the independent variable (a symbol)
+    GiNaC::ex expression;              ///< E = lhs - rhs
+    std::vector<GiNaC::ex> unknowns;   ///< x, x', ..., x^(M) as symbols (vector symbols for a vector x)
+    std::vector<GiNaC::ex> initial;    ///< x(0), ..., x^(M-1)(0)
+    bool is_vector = true;
+
+    /// M, the order.
+    std::size_t order() const { return unknowns.size() - 1; }
+    /// "r", "r'", "r''" ...
+    std::string unknown_name(std::size_t m) const { return name + std::string(m, '\''); }
+};
+
+/// The problem in the operator form of operator_ode.h, with the data vectors
+/// that the placeholder names stand for.
+struct operator_form {
+    operator_ode ode;
+    std::vector<std::pair<std::string, GiNaC::ex>> data;  ///< placeholder name -> vector (or scalar)
+    GiNaC::ex axis;    ///< w of K = w x; 0 when no term has an operator (then K = 0)
+    GiNaC::ex Omega;   ///< the positive symbol standing for |w| in ode (0 without axis)
+};
+
+/// Reads E as sum_m A_m(K) x^(m) = sum_j q_j(t) F_j. Throws domain_error naming
+/// the offending term when E is not linear in the unknowns, when two different
+/// vectors act on x by x (the operators do not commute), when a coefficient
+/// depends on t, or when the free part is not a quasi-polynomial in t.
+operator_form reduce(const cauchy_problem& P);
+
+/// The exact solution x(t), coordinate-free (vector symbols, cross, dot, |w|).
+/// Errors as reduce() and solve(operator_ode, ...) (closed_form_error when a
+/// characteristic root has no closed form, algebra_error for a singular leading
+/// coefficient).
+GiNaC::ex solve(const cauchy_problem& P);
+
+/// Result of substituting a candidate solution into the problem.
+struct solution_check {
+    GiNaC::ex residual;                   ///< E(s, s', ...), simplified
+    std::vector<GiNaC::ex> initial_differences;  ///< s^(m)(0) - X_m
+    bool residual_zero = false;
+    bool initial_ok = false;
+    explicit operator bool() const { return residual_zero && initial_ok; }
+};
+/// Exact check (vector equality by components, see vector.h).
+solution_check check(const cauchy_problem& P, const GiNaC::ex& s);
+
+}  // namespace symrep::mechanics
