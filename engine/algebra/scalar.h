@@ -15,8 +15,8 @@
 
 namespace symrep {
 
-/// Logarithms of products of powers of positive rationals written over primes:
-/// log(c b^e) -> log(c) + e log(b), log(p1^k1 ... / q1^l1 ...) -> k1 log(p1) + ... - l1 log(q1) - ...
+/// Logarithms of products of powers of positive rationals, and such powers,
+/// written over primes: log(c b^e) -> log(c) + e log(b), 8^(1/2) -> 2 2^(1/2), log(p1^k1 ... / q1^l1 ...) -> k1 log(p1) + ... - l1 log(q1) - ...
 /// (prime factors below 2^16 are split off; a larger cofactor stays one atom).
 /// Two sums of such logarithms are equal iff their expanded forms agree, so the
 /// zero test sees log(16)/2 = log(4) = 2 log(2).
@@ -37,8 +37,26 @@ inline GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
             return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
                    GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
         }
+        static GiNaC::ex power_of_integer(GiNaC::numeric N, const GiNaC::ex& q) {
+            GiNaC::ex out = 1;
+            for (long p = 2; p < 65536 && N > 1; ++p) {
+                if (GiNaC::numeric(p) * p > N) break;
+                int k = 0;
+                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
+                if (k) out *= GiNaC::pow(GiNaC::ex(p), k * q);
+            }
+            if (N > 1) out *= GiNaC::pow(GiNaC::ex(N), q);
+            return out;
+        }
         GiNaC::ex operator()(const GiNaC::ex& x) override {
             const GiNaC::ex y = x.map(*this);
+            // r^q, r a positive rational, q a non-integer rational: over primes
+            if (GiNaC::is_a<GiNaC::power>(y) && is_positive_rational(y.op(0)) &&
+                GiNaC::is_a<GiNaC::numeric>(y.op(1)) && GiNaC::ex_to<GiNaC::numeric>(y.op(1)).is_rational() &&
+                !GiNaC::ex_to<GiNaC::numeric>(y.op(1)).is_integer()) {
+                const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(y.op(0));
+                return power_of_integer(r.numer(), y.op(1)) / power_of_integer(r.denom(), y.op(1));
+            }
             if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1 ||
                 GiNaC::ex_to<GiNaC::function>(y).get_name() != "log")
                 return y;
@@ -67,8 +85,8 @@ inline GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
 inline bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
     if (GiNaC::normal(x).is_zero()) return true;
-    if (!x.has(GiNaC::log(GiNaC::wild()))) return false;
-    return GiNaC::normal(expand_rational_logs(x)).is_zero();
+    const GiNaC::ex y = expand_rational_logs(x);
+    return !y.is_equal(x) && GiNaC::normal(y).is_zero();
 }
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
@@ -146,7 +164,8 @@ inline GiNaC::ex exp_scalar(const GiNaC::ex& x) {
     const auto is_log = [](const GiNaC::ex& u) {
         return GiNaC::is_a<GiNaC::function>(u) && GiNaC::ex_to<GiNaC::function>(u).get_name() == "log";
     };
-    const GiNaC::ex e = GiNaC::expand(x);
+    // over primes, so that 8^(1/2) comes back as 2*2^(1/2) and cancels against 2^(1/2)
+    const GiNaC::ex e = GiNaC::expand(x.has(GiNaC::log(GiNaC::wild())) ? expand_rational_logs(x) : x);
     GiNaC::ex rest = 0, pre = 1;
     auto term = [&](const GiNaC::ex& u) {
         if (is_log(u)) {

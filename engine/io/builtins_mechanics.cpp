@@ -2,7 +2,7 @@
 // solutions (thesis Ch. VI), with the numeric backend behind eval and verify.
 //
 //   vector w, r0, v0
-//   P := ode(r'' + 2 w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)
+//   P := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)
 //   s := solve(P)                      coordinate-free closed form
 //   check(P, s)                        exact: residual and initial conditions
 //   verify(P, s, values, T)            against Boost.Odeint on [0, T]
@@ -197,7 +197,7 @@ void register_mechanics_builtins(registry& r) {
         "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. The problem is "
         "checked when it is made.",
         "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)",
-        "vector w, g, r0, v0\nP := ode(r'' + 2 w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
+        "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
         [](const builtin& b, const args_t&, context&) -> value {
             throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
         });
@@ -257,7 +257,7 @@ void register_mechanics_builtins(registry& r) {
         "where it occurs, and the time each method took; returns the largest relative difference. "
         "stepper: \"rkf78\" (default, controlled Runge-Kutta-Fehlberg 7(8)), \"bulirsch_stoer\", "
         "\"dopri5\"; tolerances 1e-12 absolute and relative.",
-        "", "vector r0\nverify(ode(r'' + 4 r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)", 4, 6,
+        "", "vector r0\nverify(ode(r'' + 4*r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)", 4, 6,
         [](const builtin& b, const args_t& a, context& c) -> value {
             const auto& P = problem_arg(a, 0, b);
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);

@@ -107,6 +107,27 @@ quasi_polynomial forcing_coefficient(const ex& c, const ex& t, const ex& v) {
     }
 }
 
+// sin(u), cos(u) with the sign of u chosen by the printed text of u (no leading
+// '-'): sin(-(w0 - |w|) t) -> -sin((w0 - |w|) t). GiNaC's own choice of the sign
+// of w0 - |w| follows its term order, which varies from run to run.
+ex positive_trig_arguments(const ex& e, const ex& t) {
+    struct fix : GiNaC::map_function {
+        ex t;
+        ex operator()(const ex& x) override {
+            const ex y = x.map(*this);
+            const bool s = GiNaC::is_the_function<GiNaC::sin_SERIAL>(y);
+            if (s || GiNaC::is_the_function<GiNaC::cos_SERIAL>(y)) {
+                const ex u = GiNaC::collect(GiNaC::expand(y.op(0)), t);  // one form: (w0 - |w|)*t
+                if (to_string(u).rfind('-', 0) == 0) return s ? -GiNaC::sin(-u) : GiNaC::cos(-u);
+                return s ? GiNaC::sin(u) : GiNaC::cos(u);
+            }
+            return y;
+        }
+    } f;
+    f.t = t;
+    return f(e);
+}
+
 }  // namespace
 
 operator_form reduce(const cauchy_problem& P) {
@@ -199,7 +220,7 @@ ex solve(const cauchy_problem& P) {
     std::map<std::string, ex> data(F.data.begin(), F.data.end());
     const ex norm_w = F.axis.is_zero() ? ex(0) : norm(F.axis);
     auto back = [&](const ex& c) {
-        return normalize_trig_signs(F.axis.is_zero() ? c : c.subs(F.Omega == norm_w));
+        return positive_trig_arguments(normalize_trig_signs(F.axis.is_zero() ? c : c.subs(F.Omega == norm_w)), P.t);
     };
     ex x = 0;
     for (const placeholder_coefficients& pc : S.terms) {
