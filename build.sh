@@ -10,7 +10,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
-MAIN_SCRIPT=examples/multicomplex.symrep
+MAIN_SCRIPT=examples/foucault.symrep
 
 PACKAGES=(g++ make cmake pkg-config
           libginac-dev libcln-dev libeigen3-dev libboost-dev

@@ -9,8 +9,10 @@
 #pragma once
 
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <ginac/ginac.h>
 
 namespace symrep {
@@ -80,13 +82,93 @@ inline GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
     return m(e);
 }
 
-/// Exact zero test: true when the expression normalizes to 0 (logarithms of
-/// rational numbers are compared over primes first).
+/// sin and cos of linear combinations written through exponentials: with one
+/// symbol X_m standing for e^(i m) per monomial m of the arguments, sin(sum c_k m_k)
+/// = (E - 1/E)/(2i), cos = (E + 1/E)/2, E = prod X_{m_k}^{c_k}. A trigonometric
+/// polynomial in such arguments is 0 iff this rational function in the X_m is 0,
+/// so the zero test sees the addition theorems (sin((a + b) t) = ...).
+inline GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
+    struct to_exp : GiNaC::map_function {
+        std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> X;
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            const bool s = GiNaC::is_the_function<GiNaC::sin_SERIAL>(y);
+            if (!s && !GiNaC::is_the_function<GiNaC::cos_SERIAL>(y)) return y;
+            const GiNaC::ex u = GiNaC::expand(y.op(0));
+            if (u.has(GiNaC::I)) return y;
+            GiNaC::ex E = 1;
+            for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(u) ? u.nops() : 1); ++i) {
+                GiNaC::ex term = GiNaC::is_a<GiNaC::add>(u) ? u.op(i) : u, c = 1;
+                if (GiNaC::is_a<GiNaC::numeric>(term)) {  // a constant phase: keep it as a number
+                    E *= GiNaC::exp(GiNaC::I * term);
+                    continue;
+                }
+                if (GiNaC::is_a<GiNaC::mul>(term) && GiNaC::is_a<GiNaC::numeric>(term.op(term.nops() - 1))) {
+                    c = term.op(term.nops() - 1);
+                    term = term / c;
+                }
+                auto it = X.find(term);
+                if (it == X.end()) it = X.emplace(term, GiNaC::realsymbol()).first;  // a formal variable
+                E *= GiNaC::pow(it->second, c);
+            }
+            return s ? (E - 1 / E) / (2 * GiNaC::I) : (E + 1 / E) / 2;
+        }
+    } f;
+    return f(e);
+}
+
+/// Zero test of a rational function of symbols and square roots of non-numeric
+/// expressions: each sqrt(b) becomes a symbol q_b, and the numerator is reduced
+/// modulo q_b^2 - b (normal() alone treats sqrt(b) as an unrelated atom, so that
+/// sqrt(b)^2 - b would not cancel once it is split over a fraction).
+inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
+    struct roots : GiNaC::map_function {
+        std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> q;  // base, symbol (a real root)
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (!GiNaC::is_a<GiNaC::power>(y) || GiNaC::is_a<GiNaC::numeric>(y.op(0)) ||
+                !GiNaC::is_a<GiNaC::numeric>(y.op(1)))
+                return y;
+            const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(y.op(1)) * 2;
+            if (!k.is_integer() || k.is_even()) return y;
+            for (const auto& [b, s] : q)
+                if (b.is_equal(y.op(0))) return GiNaC::pow(s, k);
+            q.emplace_back(y.op(0), GiNaC::realsymbol());
+            return GiNaC::pow(q.back().second, k);
+        }
+    } r;
+    const GiNaC::ex z = r(e);
+    if (r.q.empty()) return false;
+    try {
+        const GiNaC::ex n = GiNaC::expand(GiNaC::numer(GiNaC::normal(z)));
+        // complex coefficients (I): the real and the imaginary part vanish separately
+        for (GiNaC::ex part : {GiNaC::ex(GiNaC::real_part(n)), GiNaC::ex(GiNaC::imag_part(n))}) {
+            GiNaC::exmap atoms;  // functions and other non-polynomial parts as symbols
+            part = GiNaC::expand(part).to_polynomial(atoms);
+            for (const auto& [b, s] : r.q)
+                part = GiNaC::expand(GiNaC::rem(part, GiNaC::pow(s, 2) - b.to_polynomial(atoms), s));
+            if (!GiNaC::normal(part).is_zero()) return false;
+        }
+        return true;
+    } catch (const std::exception&) {
+        return false;  // not decided: not proved zero
+    }
+}
+
+/// Exact zero test: true when the expression normalizes to 0 (logarithms and
+/// powers of rational numbers are compared over primes, sin and cos through
+/// exponentials, and square roots of expressions as algebraic symbols, when
+/// plain normalization does not decide).
 inline bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
     if (GiNaC::normal(x).is_zero()) return true;
-    const GiNaC::ex y = expand_rational_logs(x);
-    return !y.is_equal(x) && GiNaC::normal(y).is_zero();
+    GiNaC::ex y = expand_rational_logs(x);
+    if (!y.is_equal(x) && GiNaC::normal(y).is_zero()) return true;
+    if (y.has(GiNaC::sin(GiNaC::wild())) || y.has(GiNaC::cos(GiNaC::wild()))) {
+        y = trig_exponential_form(y);
+        if (GiNaC::normal(y).is_zero()) return true;
+    }
+    return is_zero_modulo_square_roots(y);
 }
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }

@@ -190,6 +190,39 @@ std::string seconds(double s) {
 value solve_problem(const value& p) { return value(mechanics::solve(p.as_problem())); }
 
 void register_mechanics_builtins(registry& r) {
+    add(r, "cross", "cross(a, b)", "The cross product a x b (same as the operator x).", "",
+        "vector a, b\ncross(a, b) + cross(b, a)", 2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(cross(vector_arg(a, 0, b), vector_arg(a, 1, b)));
+        });
+    add(r, "dot", "dot(a, b)", "The scalar product a . b (same as the operator .).", "",
+        "vector a\ndot(a, [1, 0, 0])", 2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(dot(vector_arg(a, 0, b), vector_arg(a, 1, b)));
+        });
+    add(r, "triple", "triple(a, b, c)", "The scalar triple product [a, b, c] = a . (b x c).", "",
+        "vector a, b, c\ntriple(a, b, c) + triple(b, a, c)", 3, 3, [](const builtin& b, const args_t& a, context&) {
+            return value(triple(vector_arg(a, 0, b), vector_arg(a, 1, b), vector_arg(a, 2, b)));
+        });
+    add(r, "norm", "norm(a)", "The length |a| = sqrt(a . a) of a vector.", "",
+        "vector a\nnorm(a)^2", 1, 1, [](const builtin& b, const args_t& a, context&) {
+            return value(norm(vector_arg(a, 0, b)));
+        });
+    add(r, "vector_series", "vector_series(e, w, n)",
+        "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "
+        "eps = 1): the small-rotation approximations of the thesis, derived from the exact solution.",
+        "(VI.1.51-55)", "vector w, g\nvector_series(sin(norm(w)*t)/norm(w)*(w x g), w, 3)", 3, 3,
+        [](const builtin& b, const args_t& a, context&) {
+            const ex& e = arg_ex(a, 0, b);
+            const ex& w = arg_ex(a, 1, b);
+            if (!is_vector_symbol(w))
+                throw type_error(b.name + ": argument 2 must be a vector symbol (usage: " + b.signature + ")");
+            const long n = arg_int(a, 2, b, 0, 60);
+            // |w| and w . w through a positive symbol W, so that |eps w| = eps W
+            const GiNaC::possymbol eps("eps"), W("W");
+            const ex ew = e.subs(norm(w) == W).subs(dot(w, w) == GiNaC::pow(W, 2));
+            const ex es = subs_vectors(ew, {{w, eps * w}}).subs(W == eps * W);
+            const ex ser = GiNaC::series_to_poly(es.series(eps == 0, int(n) + 1));
+            return value(GiNaC::expand(ser.subs(eps == 1)).subs(W == norm(w)));
+        });
     add(r, "ode", "ode(equation, x(0) = x0, x'(0) = v0, ...)",
         "A linear Cauchy problem for x(t): the equation (x, x', x'' ... stand for the unknown and its "
         "derivatives in t) and one initial condition per order. x is a vector when an initial value is. "

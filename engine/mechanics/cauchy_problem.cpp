@@ -253,7 +253,7 @@ solution_check check(const cauchy_problem& P, const ex& s) {
         out.residual = P.expression.subs(sub);
         out.residual_zero = is_zero_scalar(out.residual);
     }
-    if (out.residual_zero) out.residual = 0;
+    out.residual = out.residual_zero ? ex(0) : P.is_vector ? canonical(out.residual) : GiNaC::normal(out.residual);
     out.initial_ok = true;
     for (std::size_t m = 0; m < P.order(); ++m) {
         ex diff = d[m].subs(P.t == 0) - P.initial[m];
