@@ -142,7 +142,9 @@ inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
     try {
         const GiNaC::ex n = GiNaC::expand(GiNaC::numer(GiNaC::normal(z)));
         // complex coefficients (I): the real and the imaginary part vanish separately
-        for (GiNaC::ex part : {GiNaC::ex(GiNaC::real_part(n)), GiNaC::ex(GiNaC::imag_part(n))}) {
+        std::vector<GiNaC::ex> parts{n};
+        if (n.has(GiNaC::I)) parts = {GiNaC::real_part(n), GiNaC::imag_part(n)};
+        for (GiNaC::ex part : parts) {
             GiNaC::exmap atoms;  // functions and other non-polynomial parts as symbols
             part = GiNaC::expand(part).to_polynomial(atoms);
             for (const auto& [b, s] : r.q)
@@ -155,20 +157,34 @@ inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
     }
 }
 
+/// True when e contains b^(k/2), k odd, with b not a number.
+inline bool has_symbolic_square_root(const GiNaC::ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && !GiNaC::is_a<GiNaC::numeric>(it->op(0)) &&
+            GiNaC::is_a<GiNaC::numeric>(it->op(1))) {
+            const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(it->op(1)) * 2;
+            if (k.is_integer() && k.is_odd()) return true;
+        }
+    return false;
+}
+
 /// Exact zero test: true when the expression normalizes to 0 (logarithms and
 /// powers of rational numbers are compared over primes, sin and cos through
 /// exponentials, and square roots of expressions as algebraic symbols, when
 /// plain normalization does not decide).
 inline bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
-    if (GiNaC::normal(x).is_zero()) return true;
-    GiNaC::ex y = expand_rational_logs(x);
-    if (!y.is_equal(x) && GiNaC::normal(y).is_zero()) return true;
-    if (y.has(GiNaC::sin(GiNaC::wild())) || y.has(GiNaC::cos(GiNaC::wild()))) {
-        y = trig_exponential_form(y);
-        if (GiNaC::normal(y).is_zero()) return true;
+    const GiNaC::ex y = expand_rational_logs(x);
+    // square roots of expressions first as algebraic symbols: faster than normal(),
+    // whose gcds over such atoms are slow, and complete where normal() is not
+    if (has_symbolic_square_root(y)) {
+        if (is_zero_modulo_square_roots(y)) return true;
+    } else if (GiNaC::normal(y).is_zero()) {
+        return true;
     }
-    return is_zero_modulo_square_roots(y);
+    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild()))) return false;
+    const GiNaC::ex z = trig_exponential_form(y);
+    return GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z);
 }
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
