@@ -55,6 +55,12 @@ std::vector<std::pair<ex, unsigned>> factors_of(const ex& f) {
 // sqrt of a polynomial, exact on its square factors: sqrt(4 (w0 - W)^2) = 2 (w0 - W)
 // (up to a sign, which does not matter for a root pair).
 ex sqrt_poly(const ex& e) {
+    // GiNaC's factor() keeps the integer content: sqrt(4 a + 4 b) = 2 sqrt(a + b)
+    const ex ee = GiNaC::expand(e);
+    if (!ee.is_zero() && !GiNaC::is_a<GiNaC::numeric>(ee)) {
+        const GiNaC::numeric c = ee.integer_content();
+        if (!c.is_zero() && c != 1) return GiNaC::sqrt(ex(c)) * sqrt_poly(GiNaC::expand(ee / c));
+    }
     GiNaC::exmap back;
     std::map<ex, ex, GiNaC::ex_is_less> seen;
     const ex f = GiNaC::factor(GiNaC::expand(atomize(GiNaC::expand(e), seen, back)));
@@ -157,8 +163,22 @@ std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a)
     const std::size_t M = a.size() - 1;
     if (M == 0) return {};
     std::vector<cex> candidates;
+    // a complex quadratic with a real discriminant of known sign: the quadratic
+    // formula over C (s^2 + 2 i |w| s + w0^2 of VI.2.93 has the roots
+    // i(-|w| +- sqrt(|w|^2 + w0^2)), which p conj(p), irreducible of degree 4, hides)
+    int quadratic_sign = 2;
+    cex D;
+    if (M == 2) {
+        D = tidy_cex(a[1] * a[1] - cex(ex(4), ex(0)) * a[2] * a[0]);
+        if (is_zero_scalar(D.im)) quadratic_sign = discriminant_sign(D.re);
+    }
     if (M == 1) {
         candidates.push_back(-1 * (a[0] * inverse_cex(a[1], "a characteristic root")));
+    } else if (quadratic_sign != 2) {
+        const cex sq = quadratic_sign >= 0 ? cex(exact_sqrt(D.re), ex(0)) : cex(ex(0), exact_sqrt(-D.re));
+        const cex inv2a = inverse_cex(cex(2 * a[2].re, 2 * a[2].im), "a characteristic root");
+        candidates.push_back(tidy_cex((sq - a[1]) * inv2a));
+        if (quadratic_sign != 0) candidates.push_back(tidy_cex((cex(ex(0), ex(0)) - sq - a[1]) * inv2a));
     } else {
         const GiNaC::symbol s("s");
         ex Pr = 0, Pi = 0;
