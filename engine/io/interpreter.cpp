@@ -407,6 +407,9 @@ value session::evaluate(const std::string& text) {
             if (s->kind == node::assign) {
                 exec(*s, false);
                 last = *get(s->text);
+            } else if (s->kind == node::declare) {
+                exec(*s, false);
+                last = value();
             } else {
                 last = eval(*s);
             }

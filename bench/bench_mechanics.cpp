@@ -1,0 +1,139 @@
+// Benchmarks of the Ch. VI solver as a user meets it: the time to derive each
+// application's closed form from its problem (ode(...) read, reduced to the
+// algebra of K = w x, solved, recombined), with a general axis (w abstract), and
+// the time to evaluate a derived solution per point against a hand-written C++
+// closed form of the same solution (VI.1.79) and against GiNaC subs + evalf.
+// Run: ./build/symrep_bench --benchmark_filter=Mechanics
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "io/interpreter.h"
+#include "numeric/evaluator.h"
+#include "vector/vector.h"
+
+using namespace symrep;
+using GiNaC::ex;
+
+namespace {
+
+struct application {
+    const char* declarations;
+    const char* problem;
+};
+
+// The thesis's problems (VI.1.26-28, 50, 56, 58 for v and r, 68, VI.2.93), general axis.
+const application apps[] = {
+    {"vector w, a, b, r0", "ode(r' + w x r = cos(2*t)*a + t*exp(-t)*b, r(0) = r0)"},
+    {"vector w, g, r0, v0", "ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0)"},
+    {"vector w, g, r0, v0", "ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)"},
+    {"vector E, B, v0; positive m", "ode(m*v' = q*(v x B + E), v(0) = v0)"},
+    {"vector E, B, v0, r0; positive m", "ode(m*r'' = q*(r' x B + E), r(0) = r0, r'(0) = v0)"},
+    {"vector w, r0, v0; positive w0", "ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)"},
+    {"vector w, r0, v0; positive w0", "ode(r'' + 2*w x r' + w0^2*r = 0, r(0) = r0, r'(0) = v0)"},
+};
+const char* const app_names[] = {"VI.1.28_first_order", "VI.1.50_coriolis", "VI.1.56_centrifugal",
+                                 "VI.1.58_charge_velocity", "VI.1.58_charge_position", "VI.1.68_foucault",
+                                 "VI.2.93_reduced_foucault"};
+
+void BM_Mechanics_Derive(benchmark::State& state) {
+    const application& a = apps[state.range(0)];
+    std::ostringstream out, err;
+    lang::session s(out, err);
+    s.evaluate(a.declarations);
+    const std::string stmt = std::string("solve(") + a.problem + ")";
+    for (auto _ : state) benchmark::DoNotOptimize(s.evaluate(stmt));
+    state.SetLabel(app_names[state.range(0)]);
+}
+BENCHMARK(BM_Mechanics_Derive)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
+// The Foucault solution at Paris, derived by symrep, in components with the
+// parameters put in; one input t.
+struct foucault_at_paris {
+    GiNaC::realsymbol t{"t"};
+    std::vector<ex> components;
+    foucault_at_paris() {
+        std::ostringstream out, err;
+        lang::session s(out, err);
+        s.evaluate("vector w, r0, v0; positive w0");
+        const ex sol = s.evaluate("solve(ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0))")
+                           .as_ex();
+        const double phi = 48.85 * M_PI / 180;
+        std::map<ex, ex, GiNaC::ex_is_less> m{
+            {s.symbol("w"), vector_literal(7.2921e-5 * std::cos(phi), 0, 7.2921e-5 * std::sin(phi))},
+            {s.symbol("r0"), vector_literal(3, 0, 0)},
+            {s.symbol("v0"), vector_literal(0, 0, 0)}};
+        const ex c = subs_components(sol, m).subs(GiNaC::lst{s.symbol("w0") == std::sqrt(9.81 / 67),
+                                                              s.symbol("t") == t});
+        for (unsigned i = 0; i < 3; ++i) components.push_back(c.op(i));
+    }
+};
+
+// (VI.1.79) by hand: r = psi - sin(W t)/W w x psi + (1 - cos(W t))/W^2 w x (w x psi).
+struct hand_written {
+    std::array<double, 3> w, r0{3, 0, 0}, v0{0, 0, 0};
+    double W, w0 = std::sqrt(9.81 / 67);
+    hand_written() {
+        const double phi = 48.85 * M_PI / 180;
+        w = {7.2921e-5 * std::cos(phi), 0, 7.2921e-5 * std::sin(phi)};
+        W = 7.2921e-5;
+    }
+    static std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+    std::array<double, 3> operator()(double t) const {
+        const auto wr = cross(w, r0);
+        const double c0 = std::cos(w0 * t), s0 = std::sin(w0 * t);
+        std::array<double, 3> psi;
+        for (int i = 0; i < 3; ++i) psi[i] = r0[i] * c0 + (v0[i] + wr[i]) / w0 * s0;
+        const auto a = cross(w, psi), b = cross(w, a);
+        const double s = std::sin(W * t) / W, c = (1 - std::cos(W * t)) / (W * W);
+        return {psi[0] - s * a[0] + c * b[0], psi[1] - s * a[1] + c * b[1], psi[2] - s * a[2] + c * b[2]};
+    }
+};
+
+void BM_Mechanics_Foucault_CompiledMany(benchmark::State& state) {
+    foucault_at_paris f;
+    const num::compiled_function cf = num::compile(f.components, {f.t});
+    std::vector<double> in(1024), out(3 * 1024);
+    for (int i = 0; i < 1024; ++i) in[i] = 84.375 * i;
+    for (auto _ : state) {
+        cf.eval_many(in.data(), out.data(), 1024);
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.SetItemsProcessed(state.iterations() * 1024);
+    state.SetLabel(std::to_string(cf.n_instructions()) + " instructions");
+}
+BENCHMARK(BM_Mechanics_Foucault_CompiledMany);
+
+void BM_Mechanics_Foucault_HandWrittenMany(benchmark::State& state) {
+    const hand_written h;
+    std::vector<double> out(3 * 1024);
+    for (auto _ : state) {
+        for (int i = 0; i < 1024; ++i) {
+            const auto r = h(84.375 * i);
+            out[3 * i] = r[0];
+            out[3 * i + 1] = r[1];
+            out[3 * i + 2] = r[2];
+        }
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.SetItemsProcessed(state.iterations() * 1024);
+}
+BENCHMARK(BM_Mechanics_Foucault_HandWrittenMany);
+
+void BM_Mechanics_Foucault_GiNaC(benchmark::State& state) {
+    foucault_at_paris f;
+    double t = 3600;
+    for (auto _ : state) {
+        for (const ex& c : f.components) benchmark::DoNotOptimize(GiNaC::evalf(c.subs(f.t == t)));
+        t += 1;
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Mechanics_Foucault_GiNaC);
+
+}  // namespace
