@@ -245,7 +245,10 @@ void register_core_builtins(registry& r) {
                 if (a.size() != 1) throw type_error(b.name + ": solve(P) takes the problem only");
                 return solve_problem(a[0]);
             }
-            if (a.size() != 2) throw type_error(b.name + ": expects 2 arguments, got 1 (usage: " + b.signature + ")");
+            if (a.size() != 2)
+                throw type_error(b.name + ": with one argument, solve needs a problem made by ode(...), not " +
+                                 std::string(a[0].kind() == "expression" ? "an " : "a ") + a[0].kind() +
+                                 " (usage: " + b.signature + ")");
             const GiNaC::lst eqs = relations(a[0], b, 0);
             GiNaC::lst vars;
             if (a[1].is_list()) {

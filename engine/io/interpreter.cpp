@@ -493,16 +493,7 @@ value session::ode_form(const node& n) {
             throw type_error("ode: the initial values mix vectors and scalars: " + print_ex(e));
         P.initial.push_back(e);
     }
-    // the unknown and its derivatives: the order of the equation is the number of conditions
     const std::size_t M = init.size();
-    if (P.is_vector) {
-        GiNaC::ex x = GiNaC::realsymbol(P.name);
-        register_vector_function(x, P.t);
-        P.unknowns.push_back(x);
-        for (std::size_t m = 1; m <= M; ++m) P.unknowns.push_back(derivative(P.unknowns.back()));
-    } else {
-        for (std::size_t m = 0; m <= M; ++m) P.unknowns.push_back(GiNaC::realsymbol(P.unknown_name(m)));
-    }
     // a derivative of higher order than the conditions allow is an error at its place
     std::function<void(const node&)> scan = [&](const node& k) {
         if (k.kind == node::ident && k.text.size() > P.name.size() + M && k.text.rfind(P.name, 0) == 0 &&
@@ -513,36 +504,60 @@ value session::ode_form(const node& n) {
         for (const auto& c : k.kids) scan(*c);
     };
     scan(eq);
-    // bind x, x', ... while the equation is evaluated
-    std::map<std::string, std::optional<value>> saved;
-    for (std::size_t m = 0; m <= M; ++m) {
-        const std::string nm = P.unknown_name(m);
-        const value* old = get(nm);
-        saved[nm] = old ? std::optional<value>(*old) : std::nullopt;
-        vars_[nm] = value(P.unknowns[m]);
-    }
-    auto restore = [&] {
-        for (auto& [nm, v] : saved) {
-            if (v) vars_[nm] = *v;
-            else vars_.erase(nm);
+    // The unknown and its derivatives (the order is the number of conditions),
+    // bound as x, x', ... while the equation is evaluated.
+    auto build = [&](bool vector) {
+        P.is_vector = vector;
+        P.unknowns.clear();
+        if (vector) {
+            GiNaC::ex x = GiNaC::realsymbol(P.name);
+            register_vector_function(x, P.t);
+            P.unknowns.push_back(x);
+            for (std::size_t m = 1; m <= M; ++m) P.unknowns.push_back(derivative(P.unknowns.back()));
+        } else {
+            for (std::size_t m = 0; m <= M; ++m) P.unknowns.push_back(GiNaC::realsymbol(P.unknown_name(m)));
         }
-    };
-    value lhs, rhs;
-    try {
-        lhs = eval(*eq.kids[0]);
-        rhs = eval(*eq.kids[1]);
-    } catch (...) {
+        std::map<std::string, std::optional<value>> saved;
+        for (std::size_t m = 0; m <= M; ++m) {
+            const std::string nm = P.unknown_name(m);
+            const value* old = get(nm);
+            saved[nm] = old ? std::optional<value>(*old) : std::nullopt;
+            vars_[nm] = value(P.unknowns[m]);
+        }
+        auto restore = [&] {
+            for (auto& [nm, v] : saved) {
+                if (v) vars_[nm] = *v;
+                else vars_.erase(nm);
+            }
+        };
+        value lhs, rhs;
+        try {
+            lhs = eval(*eq.kids[0]);
+            rhs = eval(*eq.kids[1]);
+        } catch (...) {
+            restore();
+            throw;
+        }
         restore();
-        throw;
+        const value E = binary_op("-", lhs, rhs);
+        if (!E.is_ex())
+            throw script_error("ode: the equation must be between expressions, not " + article(lhs) + " and " +
+                                   article(rhs), where(eq));
+        P.expression = E.as_ex();
+        if (vector && !E.as_ex().is_zero() && !is_vector(E.as_ex()))
+            throw script_error("ode: the equation is scalar but the initial values are vectors", where(eq));
+    };
+    // initial values that are all 0 leave the kind open: a vector if the equation is one
+    const bool open = !P.is_vector && std::all_of(P.initial.begin(), P.initial.end(), [](const ex& e) { return e.is_zero(); });
+    if (open) {
+        try {
+            build(true);
+        } catch (const std::exception&) {
+            build(false);
+        }
+    } else {
+        build(P.is_vector);
     }
-    restore();
-    const value E = binary_op("-", lhs, rhs);
-    if (!E.is_ex())
-        throw script_error("ode: the equation must be between expressions, not " + article(lhs) + " and " +
-                               article(rhs), where(eq));
-    P.expression = E.as_ex();
-    if (P.is_vector && !E.as_ex().is_zero() && !is_vector(E.as_ex()))
-        throw script_error("ode: the equation is scalar but the initial values are vectors", where(eq));
     (void)mechanics::reduce(P);  // the problem is checked now: errors point at ode(...)
     return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
 }
