@@ -147,6 +147,14 @@ TEST(CauchyProblem, EvalAtZeroRotationIsTheLimit) {
         const double x = GiNaC::ex_to<GiNaC::numeric>(v.as_list()[i].as_ex()).to_double();
         EXPECT_NEAR(x, expect[i], 1e-15) << i;  // the limit is exact; evalf to 20 digits
     }
+    // verify at w = 0 compares the limit with the integration of the problem at w = 0,
+    // for every stepper (1e-8: the steppers run at 1e-12 per step on [0, 10])
+    ASSERT_EQ(t.run("P := ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)"), 0);
+    for (const char* stepper : {"rkf78", "dopri5", "bulirsch_stoer"}) {
+        const ex d = t.ex(std::string("verify(P, s, [w = [0, 0, 0], w0 = 2, r0 = [1, 0, 0], v0 = [0, 1, 0]], 10, 50, \"") +
+                          stepper + "\")");
+        EXPECT_LT(GiNaC::ex_to<GiNaC::numeric>(d).to_double(), 1e-8) << stepper;
+    }
     // and several times at once
     const value l = t.val("eval(s, [w = [0, 0, 1], w0 = 2, r0 = [1, 0, 0], v0 = [0, 1, 0]], t = [0, 1, 2])");
     ASSERT_TRUE(l.is_list());
