@@ -42,6 +42,12 @@ void add(registry& r, std::string name, std::string sig, std::string summary, st
     r.add(std::move(b));
 }
 
+bool has_matrix(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::matrix>(*it)) return true;
+    return false;
+}
+
 /// Applies f to an expression, to each coordinate of an element, and recursively
 /// to the entries of a list.
 template <class F> value map_value(const value& v, const builtin& b, F&& f) {
@@ -157,7 +163,12 @@ void register_core_builtins(registry& r) {
         "given without brackets.",
         "", "subs(x^2 + y, [x = 2, y = 1])", 2, 2, [](const builtin& b, const args_t& a, context&) {
             const GiNaC::lst s = relations(a[1], b, 1);
-            return map_value(a[0], b, [&](const ex& x) { return x.subs(s); });
+            return map_value(a[0], b, [&](const ex& x) {
+                // vectors given by components: [1, 0, 0]*t + [0, 1, 0] becomes one literal
+                const ex y = x.subs(s);
+                return !has_matrix(y) || GiNaC::is_a<GiNaC::matrix>(y) ? y
+                                                                                              : y.evalm();
+            });
         });
     add(r, "expand", "expand(e)", "Multiplies out products and powers of sums.", "", "expand((x + 1)^3)", 1, 1,
         [](const builtin& b, const args_t& a, context&) {

@@ -406,7 +406,7 @@ bool involves_vectors(const ex& e) {
 }
 
 std::string print_ex(const ex& e) {
-    if (!is_a<GiNaC::relational>(e) && involves_vectors(e)) return symrep::to_string(e);
+    if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e))) return symrep::to_string(e);
     if (is_a<GiNaC::relational>(e) && (involves_vectors(e.op(0)) || involves_vectors(e.op(1))))
         return print_ex(e.op(0)) + " = " + print_ex(e.op(1));
     return pr(e).text;
