@@ -174,6 +174,9 @@ TEST(CauchyProblem, VectorOperatorsInTheLanguage) {
     // x stays a name where no operand follows or precedes it
     EXPECT_TRUE(GiNaC::ex_to<GiNaC::numeric>(t.ex("x := 3; x*x")).to_int() == 9);
     EXPECT_EQ(print_value(t.val("norm(a)^2")), "|a|^2");
+    // substituting components: the literal sums evaluate to one literal
+    EXPECT_EQ(print_value(t.val("subs(a + s*(b x a), [a = [1, 0, 0], b = [0, 0, 1]])")), "[1, s, 0]");
+    EXPECT_EQ(print_value(t.val("subs(a + s*(b x a), b = [0, 0, 1])")), "a - s*(a x [0, 0, 1])");
 }
 
 TEST(CauchyProblem, BadProblemsGetClearMessages) {
