@@ -54,8 +54,19 @@ std::string load_error(const std::string& text, const std::string& file = "t.rul
     return "";
 }
 
+// A folder of this test process, removed at exit.
+struct temp_dir {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("symrep_rules_test_" + std::to_string(::getpid()));
+    ~temp_dir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+    }
+};
+
 std::string temp_file(const std::string& name, const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() / ("symrep_rules_test_" + std::to_string(::getpid()));
+    static temp_dir td;
+    const auto& dir = td.path;
     std::filesystem::create_directories(dir);
     const auto path = dir / name;
     std::ofstream(path) << text;
