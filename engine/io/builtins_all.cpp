@@ -12,6 +12,7 @@ void register_all_builtins(registry& r) {
     register_algebra_builtins(r);
     register_check_builtins(r);
     register_mechanics_builtins(r);
+    register_rules_builtins(r);
     register_sobrero_builtins(r);
     register_walsh_builtins(r);
     register_multicomplex_builtins(r);

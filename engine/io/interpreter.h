@@ -10,6 +10,7 @@
 #include <exception>
 #include <iosfwd>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@
 #include "io/builtins.h"
 #include "io/error.h"
 #include "io/value.h"
+
+namespace symrep::rules {
+class rule_set;
+}
 
 namespace symrep::lang {
 
@@ -78,6 +83,11 @@ public:
     /// Depth of nested run_file/load calls (load refuses beyond 64).
     std::size_t load_depth() const { return dirs_.size(); }
 
+    /// The session's rewrite rules: the shipped rules (rules/vector.rules, read
+    /// on first use; see rules/rules.h) plus those added by load_rules().
+    /// Throws syntax_error / domain_error if the shipped file cannot be read.
+    symrep::rules::rule_set& rewrite_rules();
+
     /// Evaluates one expression node (used by builtins that take unevaluated
     /// arguments; public for tests).
     value eval(const node& n);
@@ -100,6 +110,7 @@ private:
     std::vector<std::string> files_;  ///< names of the scripts being run
     std::string base_dir_;
     int failures_ = 0;
+    std::shared_ptr<symrep::rules::rule_set> rules_;  ///< created by rewrite_rules()
 };
 
 /// Registers every builtin of the engine (builtins_all.cpp).
