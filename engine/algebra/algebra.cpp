@@ -113,6 +113,14 @@ bool algebra::equal(const coeffs& a, const coeffs& b) {
     return true;
 }
 
+void algebra::check_dense(const char* what) const {
+    if (dim() > max_dense_dim)
+        throw size_error(std::string(what) + ": " + name() + " has dimension " + std::to_string(dim()) +
+                         ", and dense " + std::to_string(dim()) + " x " + std::to_string(dim()) +
+                         " exact matrices are limited to " + std::to_string(max_dense_dim) + " x " +
+                         std::to_string(max_dense_dim));
+}
+
 void algebra::check_size(const coeffs& a, const char* what) const {
     if (a.size() != dim())
         throw algebra_error(std::string(what) + ": " + name() + " has dimension " +

@@ -128,6 +128,11 @@ public:
     static bool equal(const coeffs& a, const coeffs& b);
     /// Checks that a vector has dim() entries; throws algebra_error otherwise.
     void check_size(const coeffs& a, const char* what) const;
+    /// Largest n for which dense n x n exact matrices are built (canonical matrix,
+    /// general determinant/charpoly/minpoly/inverse, power basis, ...).
+    static constexpr std::size_t max_dense_dim = 1024;
+    /// Throws size_error naming `what` and the limit when dim() > max_dense_dim.
+    void check_dense(const char* what) const;
 
 protected:
     algebra() = default;

@@ -15,6 +15,7 @@ using GiNaC::matrix;
 // (II.1.3-4) row j of [w] holds the coordinates of w eps_j: a_jk = sum_i w_i gamma_ijk.
 matrix algebra::canonical_matrix(const coeffs& w) const {
     check_size(w, "canonical matrix");
+    check_dense("canonical matrix");
     const std::size_t n = dim();
     matrix M(n, n);
     for (std::size_t j = 0; j < n; ++j) {
@@ -42,6 +43,7 @@ ex algebra::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
 // rows of the lower ones.
 ex algebra::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "minimal polynomial");
+    check_dense("minimal polynomial");
     const std::size_t n = dim();
     krylov_basis K(n);
     coeffs pw = unit();

@@ -16,12 +16,30 @@ std::string str(const ex& e) {
     os << e;
     return os.str();
 }
+
+/// Largest integer exponent in e (0 when none): checked before degree(), which
+/// reads exponents as machine integers.
+GiNaC::numeric max_exponent(const ex& e, const GiNaC::symbol& X) {
+    GiNaC::numeric m = 0;
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) && e.op(0).has(X))
+        m = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1)));
+    for (std::size_t i = 0; i < e.nops(); ++i) m = std::max(m, max_exponent(e.op(i), X));
+    return m;
+}
 }  // namespace
 
 polynomial_algebra::polynomial_algebra(const ex& p, const GiNaC::symbol& X) : X_(X) {
+    const auto check_degree = [&](const ex& e) {
+        const GiNaC::numeric d = max_exponent(e, X);
+        if (d > GiNaC::numeric(long(max_degree)))
+            throw size_error("polynomial algebra: the polynomial has degree " + str(d) + " in " + str(X) +
+                             ", more than the limit " + std::to_string(max_degree));
+    };
+    check_degree(p);
     const ex q = GiNaC::expand(p);
     if (!q.is_polynomial(X))
         throw algebra_error("polynomial algebra: " + str(p) + " is not a polynomial in " + str(X));
+    check_degree(q);
     const int n = q.degree(X);
     if (n < 1)
         throw algebra_error("polynomial algebra: " + str(p) + " has degree 0 in " + str(X) +
@@ -98,6 +116,7 @@ coeffs polynomial_algebra::generator() const {
 
 // (II.1 completion) superdiagonal ones, last row -a_n .. -a_1.
 GiNaC::matrix polynomial_algebra::frobenius_matrix() const {
+    check_dense("Frobenius matrix");
     GiNaC::matrix F(n_, n_);
     for (std::size_t j = 0; j + 1 < n_; ++j) F(j, j + 1) = 1;
     for (std::size_t k = 0; k < n_; ++k) F(n_ - 1, k) = tidy(-low_[k]);

@@ -24,6 +24,8 @@ class polynomial_algebra : public algebra {
 public:
     /// P_n for a monic polynomial p in X of degree n >= 1. Throws algebra_error
     /// when p is not a polynomial in X, has degree 0, or is not monic.
+    /// Largest degree accepted (larger ones throw size_error).
+    static constexpr std::size_t max_degree = 4096;
     static std::shared_ptr<const polynomial_algebra> make(const GiNaC::ex& p, const GiNaC::symbol& X);
 
     std::string name() const override { return name_; }

@@ -124,6 +124,7 @@ generator_search find_generator(const algebra& A, std::size_t max_candidates, bo
 
 // Radical of the trace form: Tr [eps_i eps_j] = sum_k gamma_ijk Tr [eps_k].
 std::vector<coeffs> nilradical(const algebra& A) {
+    A.check_dense("nilradical");
     const std::size_t n = A.dim();
     std::vector<ex> tr(n);
     for (std::size_t k = 0; k < n; ++k) {
@@ -153,6 +154,7 @@ bool is_polynomial(const algebra& A) {
 // (III.4.4) row k = coordinates of d^k.
 GiNaC::matrix change_of_basis_to_power_basis(const algebra& A, const coeffs& d) {
     A.check_size(d, "power basis");
+    A.check_dense("power basis");
     const std::size_t n = A.dim();
     GiNaC::matrix M(n, n);
     coeffs pw = A.unit();
@@ -174,6 +176,7 @@ std::vector<ex> fundamental_system(const algebra& A, const coeffs& d, const GiNa
 
 // (III.4.2-4) M_kj = f_j^{(k)}(0).
 GiNaC::matrix wronskian_at_zero(const algebra& A, const coeffs& d) {
+    A.check_dense("Wronskian");
     const GiNaC::symbol t("t");
     const std::vector<ex> f = fundamental_system(A, d, t);
     const std::size_t n = A.dim();

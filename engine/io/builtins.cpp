@@ -20,6 +20,11 @@ std::string value::kind() const {
     }
 }
 
+std::string value::a_kind() const {
+    const std::string k = kind();
+    return (k == "expression" || k == "element" || k == "algebra" ? "an " : "a ") + k;
+}
+
 void registry::add(builtin b) {
     if (table_.count(b.name)) throw std::logic_error("builtin registered twice: " + b.name);
     std::string key = b.name;
@@ -50,7 +55,7 @@ const value& checked(const std::vector<value>& args, std::size_t i, const builti
 [[noreturn]] void wrong(const std::vector<value>& args, std::size_t i, const builtin& b,
                         const std::string& wanted) {
     throw type_error(b.name + ": argument " + std::to_string(i + 1) + " must be " + wanted +
-                     ", not " + (args[i].kind() == "expression" ? "an " : "a ") + args[i].kind() +
+                     ", not " + args[i].a_kind() +
                      " (usage: " + b.signature + ")");
 }
 }  // namespace
@@ -114,8 +119,8 @@ std::vector<GiNaC::ex> arg_ex_list(const std::vector<value>& args, std::size_t i
     for (std::size_t k = 0; k < l.size(); ++k) {
         if (!l[k].is_ex())
             throw type_error(b.name + ": entry " + std::to_string(k) + " of argument " +
-                             std::to_string(i + 1) + " must be an expression, not a " +
-                             l[k].kind() + " (usage: " + b.signature + ")");
+                             std::to_string(i + 1) + " must be an expression, not " +
+                             l[k].a_kind() + " (usage: " + b.signature + ")");
         out.push_back(l[k].as_ex());
     }
     return out;

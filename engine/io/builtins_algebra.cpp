@@ -1,6 +1,7 @@
 // symrep/io/builtins_algebra.cpp -- builtins on algebras and their elements
 // (section "Algebras and elements"), written against the virtual interface of
 // `algebra` only, so that every family's fast paths are used automatically.
+#include <algorithm>
 #include <climits>
 #include <cstdint>
 
@@ -152,6 +153,11 @@ void register_algebra_builtins(registry& r) {
             const algebra_ptr& A = arg_algebra(a, 0, b);
             const std::size_t n = A->idempotent_count();
             if (n == 0) (void)A->idempotent(0);  // throws the algebra's explanation
+            if (n > algebra::max_dense_dim)
+                throw size_error(b.name + ": " + A->name() + " has " + std::to_string(n) +
+                                 " idempotents of dimension " + std::to_string(A->dim()) +
+                                 "; the list is limited to " + std::to_string(algebra::max_dense_dim) +
+                                 " (use idempotent(A, p) for one of them)");
             list l;
             for (std::size_t p = 0; p < n; ++p) l.push_back(element(A, A->idempotent(p)));
             return value(l);
@@ -220,7 +226,26 @@ void register_algebra_builtins(registry& r) {
             const algebra_ptr& A = arg_algebra(a, 0, b);
             std::vector<ex> params;
             if (a.size() > 1) params = arg_ex_list(a, 1, b);
-            return value(element(A, A->generating_element(params)));
+            const coeffs d = A->generating_element(params);
+            // numeric parameters: check that d generates A (its minimal polynomial has
+            // degree dim A); symbolic ones are the caller's responsibility
+            const bool numeric_params = std::all_of(params.begin(), params.end(), [](const ex& p) {
+                return is_a<GiNaC::numeric>(GiNaC::evalf(p));
+            });
+            if (!params.empty() && numeric_params && A->dim() <= algebra::max_dense_dim) {
+                const GiNaC::symbol X("X");
+                const int deg = A->minpoly(d, X).degree(X);
+                if (deg != static_cast<int>(A->dim())) {
+                    std::string ps;
+                    for (const ex& p : params) ps += (ps.empty() ? "" : ", ") + print_ex(p);
+                    throw domain_error(b.name + ": the parameters [" + ps + "] do not give a generating element of " +
+                                       A->name() + ": the minimal polynomial of d has degree " +
+                                       std::to_string(deg) + ", not " + std::to_string(A->dim()) + " = dim " +
+                                       A->name() + " (choose parameters that make the characteristic polynomial "
+                                       "minimal)");
+                }
+            }
+            return value(element(A, d));
         });
 }
 

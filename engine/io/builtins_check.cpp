@@ -26,7 +26,7 @@ bool holds(const value& v, const builtin& b) {
         return is_zero_scalar(r.lhs() - r.rhs());
     }
     throw type_error(b.name + ": argument 1 must be a boolean (a == b) or an equation (a = b), not " +
-                     std::string(v.kind() == "expression" ? "an " : "a ") + v.kind());
+                     v.a_kind());
 }
 
 std::complex<double> to_complex(const GiNaC::ex& e, const builtin& b, int argno) {
@@ -73,7 +73,7 @@ void numbers_of(const value& v, const builtin& b, int argno, std::vector<std::co
     } else {
         throw type_error(b.name + ": argument " + std::to_string(argno) +
                          " must be a number, a list of numbers, a matrix or an element, not " +
-                         std::string(v.kind() == "expression" || v.kind() == "element" ? "an " : "a ") + v.kind());
+                         v.a_kind());
     }
 }
 

@@ -3,7 +3,9 @@
 // lists, matrices, scripts and help.
 #include <climits>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <iostream>
 
 #include "algebra/scalar.h"
@@ -58,8 +60,47 @@ template <class F> value map_value(const value& v, const builtin& b, F&& f) {
         for (const value& x : v.as_list()) out.push_back(map_value(x, b, f));
         return out;
     }
-    throw type_error(b.name + ": argument 1 must be an expression, element or list, not a " + v.kind() +
+    throw type_error(b.name + ": argument 1 must be an expression, element or list, not " + v.a_kind() +
                      " (usage: " + b.signature + ")");
+}
+
+bool contains_matrix(const ex& e) {
+    if (is_a<GiNaC::matrix>(e)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (contains_matrix(e.op(i))) return true;
+    return false;
+}
+
+/// Scalar functions (sin, exp, ...) have no meaning on a matrix here.
+void no_matrix(const builtin& b, const ex& x) {
+    if (contains_matrix(x))
+        throw type_error(b.name + ": not defined on a matrix (it applies to expressions, and entry by entry to "
+                                  "lists)");
+}
+
+/// degree/ldegree/coeff read exponents as machine integers: refuse larger ones
+/// instead of letting them wrap around.
+void check_int_exponents(const builtin& b, const ex& e) {
+    if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer() &&
+        abs(ex_to<numeric>(e.op(1))) > numeric(INT_MAX)) {
+        std::ostringstream os;
+        os << b.name << ": the exponent " << e.op(1) << " is too large (the limit is 2^31 - 1)";
+        throw size_error(os.str());
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) check_int_exponents(b, e.op(i));
+}
+
+/// An integer argument of factorial/binomial: exact results of larger ones would
+/// take hours and gigabytes.
+constexpr long max_combinatorial_argument = 100000;
+void check_combinatorial(const char* who, const char* what, const ex& x) {
+    if (is_a<numeric>(x) && ex_to<numeric>(x).is_rational() &&
+        abs(ex_to<numeric>(x)) > numeric(max_combinatorial_argument)) {
+        std::ostringstream os;
+        os << who << ": " << what << " " << x << " is too large (the limit is " << max_combinatorial_argument
+           << " in absolute value)";
+        throw size_error(os.str());
+    }
 }
 
 /// Substitution list from `x = 1` or `[x = 1, y = 2]`.
@@ -101,7 +142,7 @@ value matrix_from(const list& rows, const builtin& b) {
         for (std::size_t c = 0; c < ncols; ++c) {
             const value& x = rows[r].as_list()[c];
             if (!x.is_ex()) throw type_error(b.name + ": entry [" + std::to_string(r) + "][" + std::to_string(c) +
-                                             "] must be an expression, not a " + x.kind());
+                                             "] must be an expression, not " + x.a_kind());
             m(r, c) = x.as_ex();
         }
     return ex(m);
@@ -114,7 +155,10 @@ void add_elementary(registry& r, const char* name, const char* what, const std::
         example, 1, 1, [f](const builtin& b, const args_t& a, context&) {
             if (a[0].is_element())
                 throw type_error(b.name + ": not defined on algebra elements (exp and log are)");
-            return map_value(a[0], b, [&](const ex& x) { return f(x); });
+            return map_value(a[0], b, [&](const ex& x) {
+                no_matrix(b, x);
+                return f(x);
+            });
         });
 }
 
@@ -219,14 +263,17 @@ void register_core_builtins(registry& r) {
         "coeff((x + 2)^3, x, 1)", 3, 3, [](const builtin& b, const args_t& a, context&) {
             const ex x = arg_ex(a, 1, b);
             const long n = arg_int(a, 2, b, -1000000, 1000000);
+            check_int_exponents(b, arg_ex(a, 0, b));
             return value(GiNaC::expand(arg_ex(a, 0, b)).coeff(x, static_cast<int>(n)));
         });
     add(r, "degree", "degree(e, x)", "The degree of the expanded polynomial e in x.", "",
         "degree(x^3 + x*y^5, x)", 2, 2, [](const builtin& b, const args_t& a, context&) {
+            check_int_exponents(b, arg_ex(a, 0, b));
             return value(ex(GiNaC::expand(arg_ex(a, 0, b)).degree(arg_ex(a, 1, b))));
         });
     add(r, "ldegree", "ldegree(e, x)", "The lowest degree of x in the expanded polynomial e.", "",
         "ldegree(x^3 + x^2, x)", 2, 2, [](const builtin& b, const args_t& a, context&) {
+            check_int_exponents(b, arg_ex(a, 0, b));
             return value(ex(GiNaC::expand(arg_ex(a, 0, b)).ldegree(arg_ex(a, 1, b))));
         });
     add(r, "numer", "numer(e)", "The numerator of the normal form of e.", "", "numer((x + 1)/(x - 1))", 1, 1,
@@ -258,7 +305,7 @@ void register_core_builtins(registry& r) {
             }
             if (a.size() != 2)
                 throw type_error(b.name + ": with one argument, solve needs a problem made by ode(...), not " +
-                                 std::string(a[0].kind() == "expression" ? "an " : "a ") + a[0].kind() +
+                                 a[0].a_kind() +
                                  " (usage: " + b.signature + ")");
             const GiNaC::lst eqs = relations(a[0], b, 0);
             GiNaC::lst vars;
@@ -313,13 +360,18 @@ void register_core_builtins(registry& r) {
                    [](const ex& x) { return GiNaC::imag_part(x); });
     add_elementary(r, "conjugate", "complex conjugate", "conjugate(2 + 3*I)",
                    [](const ex& x) { return GiNaC::conjugate(x); });
-    add_elementary(r, "factorial", "factorial", "factorial(10)", [](const ex& x) { return GiNaC::factorial(x); });
+    add_elementary(r, "factorial", "factorial", "factorial(10)", [](const ex& x) {
+        check_combinatorial("factorial", "the argument", x);
+        return GiNaC::factorial(x);
+    });
     add(r, "atan2", "atan2(y, x)", "The angle of the point (x, y), in (-pi, pi].", "", "atan2(1, -1)", 2, 2,
         [](const builtin& b, const args_t& a, context&) {
             return value(GiNaC::atan2(arg_ex(a, 0, b), arg_ex(a, 1, b)));
         });
     add(r, "binomial", "binomial(n, k)", "The binomial coefficient n choose k.", "", "binomial(5, 2)", 2, 2,
         [](const builtin& b, const args_t& a, context&) {
+            check_combinatorial("binomial", "n =", arg_ex(a, 0, b));
+            check_combinatorial("binomial", "k =", arg_ex(a, 1, b));
             return value(GiNaC::binomial(arg_ex(a, 0, b), arg_ex(a, 1, b)));
         });
 
@@ -334,7 +386,10 @@ void register_core_builtins(registry& r) {
             }
             if (a.size() > 1) throw type_error(b.name + ": the second argument t is only for elements (usage: " +
                                                b.signature + ")");
-            return map_value(a[0], b, [](const ex& x) { return GiNaC::exp(x); });
+            return map_value(a[0], b, [&](const ex& x) {
+                no_matrix(b, x);
+                return GiNaC::exp(x);
+            });
         });
     add(r, "log", "log(x) / log(w)",
         "The natural logarithm of an expression; for an algebra element w, a logarithm u of w in the algebra "
@@ -342,7 +397,10 @@ void register_core_builtins(registry& r) {
         "(III.1.55, III.1.72-76)", "coords(log(element(multicomplex(0), [0, 1])))", 1, 1,
         [](const builtin& b, const args_t& a, context&) -> value {
             if (a[0].is_element()) return a[0].as_element().log();
-            return map_value(a[0], b, [](const ex& x) { return GiNaC::log(x); });
+            return map_value(a[0], b, [&](const ex& x) {
+                no_matrix(b, x);
+                return GiNaC::log(x);
+            });
         });
     add(r, "det", "det(m) / det(w)",
         "The determinant of a square matrix, or of the canonical matrix [w] of an algebra element.", "(II.1.21)",
@@ -411,6 +469,9 @@ void register_core_builtins(registry& r) {
             if (s->load_depth() >= 64) throw size_error(b.name + ": more than 64 nested loads");
             const std::string path = arg_string(a, 0, b);
             const std::string full = s->resolve_path(path);
+            std::error_code ec;
+            if (std::filesystem::is_directory(full, ec))
+                throw domain_error(b.name + ": '" + full + "' is a directory, not a script");
             std::ifstream probe(full);
             if (!probe) throw domain_error(b.name + ": cannot open file '" + full + "'");
             s->run_file(path);

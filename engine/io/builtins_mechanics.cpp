@@ -60,7 +60,7 @@ ex vector_arg(const args_t& a, std::size_t i, const builtin& b) {
 const mechanics::cauchy_problem& problem_arg(const args_t& a, std::size_t i, const builtin& b) {
     if (!a[i].is_problem())
         throw type_error(b.name + ": argument " + std::to_string(i + 1) + " must be a problem made by ode(...), not " +
-                         (a[i].kind() == "expression" ? "an " : "a ") + a[i].kind() + " (usage: " + b.signature + ")");
+                         a[i].a_kind() + " (usage: " + b.signature + ")");
     return a[i].as_problem();
 }
 

@@ -31,7 +31,7 @@ std::vector<std::vector<coeffs>> read_table(const std::vector<value>& args, cons
             throw type_error(b.name + ": gamma[" + std::to_string(i) + "] must be a list of " +
                              std::to_string(n) + " products (one per basis element), not " +
                              (rows[i].is_list() ? "a list of " + std::to_string(rows[i].as_list().size())
-                                                : "a " + rows[i].kind()));
+                                                : rows[i].a_kind()));
         const list& row = rows[i].as_list();
         for (std::size_t j = 0; j < n; ++j) {
             if (!row[j].is_list() || row[j].as_list().size() != n)
@@ -40,7 +40,7 @@ std::vector<std::vector<coeffs>> read_table(const std::vector<value>& args, cons
                                  std::to_string(n) + " expressions");
             for (const value& x : row[j].as_list()) {
                 if (!x.is_ex())
-                    throw type_error(b.name + ": " + entry(i, j) + " holds a " + x.kind() +
+                    throw type_error(b.name + ": " + entry(i, j) + " holds " + x.a_kind() +
                                      "; coordinates must be expressions");
                 g[i][j].push_back(x.as_ex());
             }
@@ -80,7 +80,7 @@ void register_polynomial_builtins(registry& r) {
                    for (std::size_t k = 0; k < l.size(); ++k) {
                        if (!l[k].is_string())
                            throw type_error(b.name + ": basis name " + std::to_string(k) +
-                                            " must be a string, not a " + l[k].kind());
+                                            " must be a string, not " + l[k].a_kind());
                        names.push_back(l[k].as_string());
                    }
                }

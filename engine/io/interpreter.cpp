@@ -16,6 +16,44 @@
 
 namespace symrep::lang {
 
+namespace {
+const char* const out_of_memory_message =
+    "out of memory: the result is too large for this machine (the statement was abandoned)";
+
+/// Known messages of GiNaC and CLN, said in the terms of the language.
+std::string clear_message(const std::string& m) {
+    struct known {
+        const char* raw;
+        const char* clear;
+    };
+    static const known table[] = {
+        {"pow(0,0) is undefined", "0^0 is undefined"},
+        {"singular matrix", "the matrix is singular"},
+        {"numeric::factorial(): argument must be integer >= 0",
+         "factorial: the argument must be an integer >= 0"},
+        {"log(0)", "log(0) is undefined"},
+        {"floating point overflow", "floating-point overflow (a number too large for floating point)"},
+        {"floating point underflow", "floating-point underflow (a number too small for floating point)"},
+        {"division by zero", "division by zero"},
+        {"sum of non-commutative objects has non-zero numeric term",
+         "a matrix cannot be added to a number here (use a multiple of the identity matrix)"},
+        {"Not a 32-bit integer", "a number is too large here (it must fit in 32 bits)"},
+        {"Not a 64-bit integer", "a number is too large here (it must fit in 64 bits)"},
+    };
+    for (const known& k : table)
+        if (m.find(k.raw) != std::string::npos) return k.clear;
+    return m;
+}
+
+/// The message to show for an exception: symrep's own verbatim, others translated.
+std::string message_of(const std::exception& e) {
+    if (dynamic_cast<const symrep::error*>(&e)) return e.what();
+    if (dynamic_cast<const std::bad_alloc*>(&e)) return out_of_memory_message;
+    return clear_message(e.what());
+}
+
+}  // namespace
+
 using GiNaC::ex;
 using GiNaC::ex_to;
 using GiNaC::is_a;
@@ -29,10 +67,7 @@ std::string num_str(const GiNaC::numeric& x) {
     return os.str();
 }
 
-std::string article(const value& v) {
-    const std::string k = v.kind();
-    return (k == "expression" || k == "element" || k == "algebra" ? "an " : "a ") + k;
-}
+std::string article(const value& v) { return v.a_kind(); }
 
 const char* verb(const std::string& op) {
     if (op == "+") return "add";
@@ -60,18 +95,47 @@ bool has_symbolic(const ex& e) {
     return false;
 }
 
-ex finish(const ex& e, const ex& a, const ex& b) {
-    if (is_a<GiNaC::matrix>(a) || is_a<GiNaC::matrix>(b)) return e.evalm();
-    return e;
+// An operation with a matrix operand must give a matrix: 2^m, m^x and the like
+// have no meaning here (GiNaC would keep them as unevaluated products or powers
+// that cannot even be printed).
+ex finish(const ex& e, const ex& a, const ex& b, const std::string& op) {
+    if (!is_a<GiNaC::matrix>(a) && !is_a<GiNaC::matrix>(b)) return e;
+    const ex r = e.evalm();
+    if (!is_a<GiNaC::matrix>(r)) {
+        if (op == "^" && is_a<GiNaC::matrix>(b))
+            throw type_error("a matrix cannot be an exponent (operator '^')");
+        if (op == "^")
+            throw type_error("a matrix can only be raised to an integer power, not " + print_ex(b) +
+                             " (operator '^')");
+        throw type_error("cannot combine a matrix with " +
+                         std::string(is_a<GiNaC::matrix>(a) ? print_ex(b) : print_ex(a)) + " (operator '" + op +
+                         "')");
+    }
+    return r;
+}
+
+/// Integer exponents of non-numeric bases (x^k, (2*x)^k, m^k) are limited to this.
+constexpr long max_symbolic_exponent = 100000;
+
+/// The largest bit length of the rational numbers in e (0 when there are none).
+long max_numeric_bits(const ex& e) {
+    if (is_a<numeric>(e)) {
+        const numeric& x = ex_to<numeric>(e);
+        if (!x.is_rational()) return 64;
+        return std::max(x.numer().int_length(), x.denom().int_length());
+    }
+    long m = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) m = std::max(m, max_numeric_bits(e.op(i)));
+    return m;
 }
 
 ex ex_binary(const std::string& op, const ex& a, const ex& b) {
-    if (op == "+") return finish(a + b, a, b);
-    if (op == "-") return finish(a - b, a, b);
-    if (op == "*") return finish(a * b, a, b);
+    if (op == "+") return finish(a + b, a, b, op);
+    if (op == "-") return finish(a - b, a, b, op);
+    if (op == "*") return finish(a * b, a, b, op);
     if (op == "/") {
         if (b.is_zero()) throw domain_error("division by zero");
-        return finish(a / b, a, b);
+        return finish(a / b, a, b, op);
     }
     if (op == "^") {
         if (a.is_zero() && is_a<numeric>(b) && ex_to<numeric>(b).is_real() &&
@@ -87,7 +151,20 @@ ex ex_binary(const std::string& op, const ex& a, const ex& b) {
                 throw size_error("the exact power " + print_ex(a) + "^" + print_ex(b) +
                                  " would have more than 10^7 bits");
         }
-        return finish(GiNaC::pow(a, b), a, b);
+        if (!is_a<numeric>(a) && is_a<numeric>(b) && ex_to<numeric>(b).is_integer()) {
+            // integer powers of symbolic bases and matrices: bound the exponent, and the
+            // size of the numbers the power of the base's numeric factors would have
+            const numeric k = abs(ex_to<numeric>(b));
+            if (k > numeric(max_symbolic_exponent))
+                throw size_error("the power " + print_ex(b) + " of " +
+                                 (is_a<GiNaC::matrix>(a) ? std::string("a matrix") : print_ex(a)) +
+                                 " is too large: integer exponents of symbolic bases and matrices are limited to "
+                                 "10^5 in absolute value");
+            if (k * numeric(max_numeric_bits(a)) > numeric(10000000))
+                throw size_error("the power " + print_ex(b) + " of " + print_ex(a) +
+                                 " would hold numbers of more than 10^7 bits");
+        }
+        return finish(GiNaC::pow(a, b), a, b, op);
     }
     throw type_error("unknown operator " + op);
 }
@@ -97,7 +174,9 @@ long integer_exponent(const value& b) {
         throw type_error("the power of an element must be an integer, not " +
                          (b.is_ex() ? print_ex(b.as_ex()) : article(b)));
     const numeric k = ex_to<numeric>(b.as_ex());
-    if (abs(k) > numeric(1000000000L)) throw size_error("exponent " + num_str(k) + " is too large");
+    if (abs(k) > numeric(max_symbolic_exponent))
+        throw size_error("the power " + num_str(k) + " of an element is too large: element powers are limited to "
+                         "10^5 in absolute value");
     return k.to_long();
 }
 
@@ -342,15 +421,19 @@ void session::report(const source_location& where, const std::string& msg) {
 
 int session::run_file(const std::string& path) {
     const std::string full = resolve_path(path);
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(full, ec)) {
+        report({path, 1, 1}, "cannot run '" + full + "': it is a directory, not a script");
+        return 1;
+    }
     std::ifstream in(full, std::ios::binary);
     if (!in) {
-        ++failures_;
-        *err_ << path << ": error: cannot open file '" << full << "'\n";
+        report({path, 1, 1}, "cannot open file '" + full + "'");
         return 1;
     }
     std::stringstream ss;
     ss << in.rdbuf();
-    namespace fs = std::filesystem;
     std::string dir = fs::path(full).parent_path().string();
     dirs_.push_back(dir);
     int failed = 0;
@@ -380,10 +463,19 @@ int session::run_string(const std::string& text, const std::string& name) {
             continue;
         }
         if (!s) continue;
+        const source_location here{name, s->line, s->column};
         try {
             exec(*s, true);
         } catch (const script_error& e) {
             report(e.where, e.what());
+        } catch (const std::bad_alloc&) {
+            report(here, out_of_memory_message);
+        } catch (const symrep::error& e) {
+            report(here, e.what());
+        } catch (const std::exception& e) {
+            report(here, clear_message(e.what()));
+        } catch (...) {
+            report(here, "unknown internal error");
         }
     }
     files_.pop_back();
@@ -584,8 +676,14 @@ value session::eval(const node& n) {
         return eval_inner(n);
     } catch (const script_error&) {
         throw;
-    } catch (const std::exception& e) {
+    } catch (const std::bad_alloc&) {
+        throw script_error(out_of_memory_message, {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+                           std::make_exception_ptr(size_error(out_of_memory_message)));
+    } catch (const symrep::error& e) {
         throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+                           std::current_exception());
+    } catch (const std::exception& e) {
+        throw script_error(clear_message(e.what()), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
                            std::current_exception());
     } catch (...) {
         throw script_error("unknown internal error", {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
@@ -608,6 +706,18 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
         }
     }
     return d[b.size()];
+}
+
+/// Float literals: 1e999999999 would make CLN work for hours.
+void check_float_exponent(const std::string& text) {
+    const std::size_t e = text.find_first_of("eE");
+    if (e == std::string::npos) return;
+    std::size_t i = e + 1;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    while (i < text.size() && text[i] == '0') ++i;
+    const std::string digits = text.substr(i);
+    if (digits.size() > 6 || (!digits.empty() && std::stol(digits) > 100000))
+        throw size_error("the exponent of the number " + text + " is too large (the limit is 10^5 in absolute value)");
 }
 
 long index_value(const value& v, std::size_t size) {
@@ -707,6 +817,7 @@ value session::eval_inner(const node& n) {
         case node::number: {
             const bool is_float = n.text.find_first_of(".eE") != std::string::npos;
             if (!is_float) return ex(numeric(n.text.c_str()));
+            check_float_exponent(n.text);
             return ex(numeric(n.text.c_str()).evalf());
         }
         case node::string: return n.text;
@@ -739,7 +850,7 @@ value session::eval_inner(const node& n) {
                 try {
                     acc = binary_op(std::string(1, n.text[i]), acc, b);
                 } catch (const std::exception& e) {
-                    throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.op_pos[i].first,
+                    throw script_error(message_of(e), {files_.empty() ? "<string>" : files_.back(), n.op_pos[i].first,
                                                   n.op_pos[i].second},
                                        std::current_exception());
                 }

@@ -59,7 +59,7 @@ public:
     int run_string(const std::string& text, const std::string& name);
     /// Runs a script file (relative paths: relative to the folder of the script
     /// being run, else to the base directory). An unreadable file counts as one
-    /// failure, reported as "FILE: error: cannot open ...".
+    /// failure, reported as "FILE:1:1: error: cannot open ..." (a directory too).
     int run_file(const std::string& path);
     /// Evaluates the statements of `text` silently (no echo; print() still
     /// writes to out()) and returns the value of the last one. Throws

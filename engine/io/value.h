@@ -6,6 +6,8 @@
 // (`ode(...)`). Values are immutable and cheap to copy.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <variant>
@@ -14,6 +16,7 @@
 #include <ginac/ginac.h>
 
 #include "algebra/element.h"
+#include "io/error.h"
 #include "mechanics/cauchy_problem.h"
 
 namespace symrep::lang {
@@ -22,9 +25,19 @@ struct value;
 using list = std::vector<value>;
 using problem_ptr = std::shared_ptr<const mechanics::cauchy_problem>;
 
+/// Lists may nest at most this deep ([[...]] counts 2): printing, comparing and
+/// destroying a value recurse through the nesting.
+inline constexpr std::size_t max_list_depth = 1000;
+
 struct value {
     using variant_t = std::variant<std::monostate, bool, GiNaC::ex, std::string,
                                    std::shared_ptr<const list>, algebra_ptr, element, problem_ptr>;
+private:
+    std::size_t depth_ = 0;  ///< list nesting depth (0: not a list), cached at construction
+
+    static std::size_t list_depth_of(const list& l);
+
+public:
     variant_t v;
 
     value() = default;
@@ -34,7 +47,8 @@ struct value {
     value(int k) : v(GiNaC::ex(k)) {}
     value(std::string s) : v(std::move(s)) {}
     value(const char* s) : v(std::string(s)) {}
-    value(list l) : v(std::make_shared<const list>(std::move(l))) {}
+    /// Throws size_error when the list would nest deeper than max_list_depth.
+    value(list l) : depth_(list_depth_of(l)), v(std::make_shared<const list>(std::move(l))) {}
     value(algebra_ptr A) : v(std::move(A)) {}
     value(element w) : v(std::move(w)) {}
     value(problem_ptr p) : v(std::move(p)) {}
@@ -58,6 +72,18 @@ struct value {
 
     /// "nothing", "boolean", "expression", "string", "list", "algebra", "element", "problem".
     std::string kind() const;
+    /// kind() with its article: "an expression", "a list", ...
+    std::string a_kind() const;
+    /// Nesting depth of a list value ([] is 1, [[1]] is 2); 0 for other values.
+    std::size_t list_depth() const { return is_list() ? depth_ : 0; }
 };
+
+inline std::size_t value::list_depth_of(const list& l) {
+    std::size_t d = 0;
+    for (const value& x : l) d = std::max(d, x.list_depth());
+    if (d + 1 > max_list_depth)
+        throw size_error("lists nest more than " + std::to_string(max_list_depth) + " deep");
+    return d + 1;
+}
 
 }  // namespace symrep::lang
