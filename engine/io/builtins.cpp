@@ -1,6 +1,8 @@
 // symrep/io/builtins.cpp -- the builtin registry and argument checking.
 #include "io/builtins.h"
 
+#include <memory>
+
 #include <algorithm>
 #include <climits>
 #include <sstream>
@@ -23,6 +25,23 @@ std::string value::kind() const {
 std::string value::a_kind() const {
     const std::string k = kind();
     return (k == "expression" || k == "element" || k == "algebra" ? "an " : "a ") + k;
+}
+
+void add_builtin(registry& r, const char* section, std::string name, std::string signature, std::string summary,
+                 std::string equation, std::string example, std::size_t min_args, std::size_t max_args,
+                 builtin_body body) {
+    builtin b;
+    b.name = std::move(name);
+    b.signature = std::move(signature);
+    b.summary = std::move(summary);
+    b.equation = std::move(equation);
+    b.example = std::move(example);
+    b.section = section;
+    b.min_args = min_args;
+    b.max_args = max_args;
+    auto self = std::make_shared<builtin>(b);
+    b.fn = [self, body = std::move(body)](const std::vector<value>& a, context& c) { return body(*self, a, c); };
+    r.add(std::move(b));
 }
 
 void registry::add(builtin b) {

@@ -56,6 +56,13 @@ private:
     std::map<std::string, builtin> table_;
 };
 
+/// The body of a builtin: it receives the builtin itself (for the arg_* checkers' messages).
+using builtin_body = std::function<value(const builtin&, const std::vector<value>&, context&)>;
+/// Registers a builtin in `section` whose body receives the builtin itself.
+void add_builtin(registry& r, const char* section, std::string name, std::string signature, std::string summary,
+                 std::string equation, std::string example, std::size_t min_args, std::size_t max_args,
+                 builtin_body body);
+
 // --- argument checking: each throws type_error naming the function and argument
 const element& arg_element(const std::vector<value>& args, std::size_t i, const builtin& b);
 const algebra_ptr& arg_algebra(const std::vector<value>& args, std::size_t i, const builtin& b);

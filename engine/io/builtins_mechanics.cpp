@@ -30,19 +30,9 @@ const char* const section = "Vectors and mechanics";
 using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
 
 void add(registry& r, std::string name, std::string sig, std::string summary, std::string eq, std::string example,
-         std::size_t mn, std::size_t mx, std::function<value(const builtin&, const args_t&, context&)> fn) {
-    builtin b;
-    b.name = std::move(name);
-    b.signature = std::move(sig);
-    b.summary = std::move(summary);
-    b.equation = std::move(eq);
-    b.example = std::move(example);
-    b.section = section;
-    b.min_args = mn;
-    b.max_args = mx;
-    auto self = std::make_shared<builtin>(b);
-    b.fn = [self, fn](const args_t& a, context& c) { return fn(*self, a, c); };
-    r.add(std::move(b));
+         std::size_t mn, std::size_t mx, builtin_body fn) {
+    add_builtin(r, section, std::move(name), std::move(sig), std::move(summary), std::move(eq), std::move(example),
+                mn, mx, std::move(fn));
 }
 
 ex vector_arg(const args_t& a, std::size_t i, const builtin& b) {
