@@ -3,6 +3,8 @@
 // and the session (the program) must go on.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -31,30 +33,8 @@ template <class E> void expect_error(test::test_session& t, const std::string& t
     }
 }
 
-struct result {
-    std::string out, err;
-    int status = -1;  // -1: killed by a signal
-};
-
-result run_cli(const std::string& args) {
-    static int counter = 0;
-    const std::string err_path = ::testing::TempDir() + "/symrep_bad_" + std::to_string(getpid()) + "_" +
-                                 std::to_string(counter++) + "_err.txt";
-    const std::string cmd = std::string("'") + SYMREP_BINARY + "' " + args + " 2>'" + err_path + "' </dev/null";
-    result r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    std::ifstream f(err_path);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    r.err = ss.str();
-    return r;
-}
+using result = test::cli_result;
+result run_cli(const std::string& args) { return test::run_symrep(args); }
 
 void add_test_builtin(registry& r, const char* name, std::function<value()> fn) {
     builtin b;

@@ -2,6 +2,8 @@
 // registry with a small mock context.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include "mock_context.h"
 
 #include <map>
@@ -41,14 +43,7 @@ value complex_table() {
     return value(list{value(list{vec({1, 0}), vec({0, 1})}), value(list{vec({0, 1}), vec({-1, 0})})});
 }
 
-std::string what_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "<no exception>";
-}
+using symrep::test::what_of;
 
 }  // namespace
 

@@ -13,6 +13,8 @@
 // larger orders and on special elements.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <bit>
 #include <cmath>
 #include <random>
@@ -147,14 +149,7 @@ coeffs xor_direct(const coeffs& a, const coeffs& b) {
     return c;
 }
 
-template <class F> std::string what_of(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "<no exception>";
-}
+using symrep::test::what_of;
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 // the generated reference in docs/language.md, and the examples of every builtin.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,43 +20,11 @@ using namespace symrep::lang;
 
 namespace {
 
-struct result {
-    std::string out, err;
-    int status = -1;
-};
+using result = symrep::test::cli_result;
+using symrep::test::slurp;
 
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-/// Runs `args` (shell syntax) with the symrep binary; stdin from `input` if given.
 result run(const std::string& args, const std::string* input = nullptr) {
-    // Unique file names: ctest runs the tests of this file in parallel processes.
-    static int counter = 0;
-    const std::string dir = ::testing::TempDir() + "/symrep_cli_" + std::to_string(getpid()) +
-                            "_" + std::to_string(counter++);
-    const std::string err_path = dir + "_err.txt";
-    std::string cmd = std::string("'") + SYMREP_BINARY + "' " + args + " 2>'" + err_path + "'";
-    if (input) {
-        const std::string in_path = dir + "_in.txt";
-        std::ofstream(in_path, std::ios::binary) << *input;
-        cmd += " <'" + in_path + "'";
-    } else {
-        cmd += " </dev/null";
-    }
-    result r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    r.err = slurp(err_path);
-    return r;
+    return symrep::test::run_symrep(args, input);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // roots of the minimal polynomial, against the definitions of II.2.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include "algebra/element.h"
 #include "algebra/polynomial_algebra.h"
 #include "algebra/polynomial_structure.h"
@@ -70,14 +72,7 @@ ex split_sums(const ex& e) {
     return e.map([](const ex& x) { return split_sums(x); });
 }
 
-std::string what_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "<no exception>";
-}
+using symrep::test::what_of;
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 // Theorem III.4.1 (generators, power basis III.4.4, Wronskian form III.4.2-4).
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include "algebra/polynomial_algebra.h"
 #include "algebra/polynomial_structure.h"
 #include "algebra/scalar.h"
@@ -24,14 +26,7 @@ bool same(const GiNaC::matrix& a, const GiNaC::matrix& b) {
     return true;
 }
 
-std::string what_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "<no exception>";
-}
+using symrep::test::what_of;
 
 }  // namespace
 

@@ -1,0 +1,69 @@
+// tests/test_util.h -- small helpers shared by the test files: the message of
+// an expected exception, and running the symrep program (SYMREP_BINARY).
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace symrep::test {
+
+/// The what() of the exception f throws, or "<no exception>".
+inline std::string what_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "<no exception>";
+}
+
+inline std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+struct cli_result {
+    std::string out, err;
+    int status = -1;  ///< -1: killed by a signal
+};
+
+#ifdef SYMREP_BINARY
+/// Runs `args` (shell syntax) with the symrep binary; stdin from `input` if given, else /dev/null.
+inline cli_result run_symrep(const std::string& args, const std::string* input = nullptr) {
+    // Unique file names: ctest runs the tests in parallel processes.
+    static int counter = 0;
+    const std::string base = ::testing::TempDir() + "/symrep_cli_" + std::to_string(getpid()) + "_" +
+                             std::to_string(counter++);
+    const std::string err_path = base + "_err.txt";
+    std::string cmd = std::string("'") + SYMREP_BINARY + "' " + args + " 2>'" + err_path + "'";
+    if (input) {
+        const std::string in_path = base + "_in.txt";
+        std::ofstream(in_path, std::ios::binary) << *input;
+        cmd += " <'" + in_path + "'";
+    } else {
+        cmd += " </dev/null";
+    }
+    cli_result r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    std::size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+    const int st = pclose(p);
+    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.err = slurp(err_path);
+    return r;
+}
+#endif
+
+}  // namespace symrep::test
