@@ -232,3 +232,15 @@ TEST(CauchyProblem, PrintedSolutionsAreDeterministic) {
         else EXPECT_EQ(t.out.str(), first);
     }
 }
+
+// (VI.1.1-15): the skew matrix represents w x, and exp(-K t) derived from the
+// minimal polynomial of K is the Rodrigues rotation and solves x' + w x x = 0.
+TEST(CauchyProblem, SkewMatrixAndRotationOperator) {
+    test_session t;
+    EXPECT_TRUE(t.val("skew([1, 2, 3]) * matrix([[4], [5], [6]]) == matrix([[-3], [6], [-3]])").as_bool());
+    ASSERT_EQ(t.run("vector w, x\nE := rotation_operator(w, t, x)"), 0) << t.err.str();
+    EXPECT_TRUE(t.val("E == x - sin(norm(w)*t)/norm(w)*(w x x) + (1 - cos(norm(w)*t))/norm(w)^2*(w x (w x x))").as_bool());
+    EXPECT_TRUE(t.val("E == solve(ode(r' + w x r = 0, r(0) = x))").as_bool());
+    EXPECT_TRUE(t.val("check(ode(r' + w x r = 0, r(0) = x), E)").as_bool());
+    EXPECT_TRUE(t.val("rotation_operator(0, t, x) == x").as_bool());
+}

@@ -16,6 +16,7 @@
 #include "io/builtins.h"
 #include "io/printer.h"
 #include "mechanics/cauchy_problem.h"
+#include "mechanics/rotation_operator_algebra.h"
 #include "numeric/verify.h"
 #include "vector/vector.h"
 
@@ -195,6 +196,30 @@ void register_mechanics_builtins(registry& r) {
     add(r, "norm", "norm(a)", "The length |a| = sqrt(a . a) of a vector.", "",
         "vector a\nnorm(a)^2", 1, 1, [](const builtin& b, const args_t& a, context&) {
             return value(norm(vector_arg(a, 0, b)));
+        });
+    add(r, "skew", "skew(w)",
+        "The skew matrix of w = [w1, w2, w3] (its matrix representation: skew(w) * x = w x x for columns x).",
+        "(VI.1.1-11)", "skew([1, 2, 3]) * matrix([[4], [5], [6]])", 1, 1,
+        [](const builtin& b, const args_t& a, context&) {
+            const ex w = vector_arg(a, 0, b);
+            if (!is_vector_literal(w))
+                throw type_error(b.name + ": argument 1 must be a vector given by its components [w1, w2, w3]");
+            const ex x = w.op(0), y = w.op(1), z = w.op(2);
+            return value(ex(GiNaC::matrix(3, 3, GiNaC::lst{0, -z, y, z, 0, -x, -y, x, 0})));
+        });
+    add(r, "rotation_operator", "rotation_operator(w, t, x)",
+        "exp(-K t) x with K = w x, derived by the algebra layer from the minimal polynomial X^3 + |w|^2 X of K "
+        "(Hermite interpolation, Thm II.2.3): x - sin(|w| t)/|w| w x x + (1 - cos(|w| t))/|w|^2 w x (w x x), "
+        "the solution of x' + w x x = 0 (Rodrigues).",
+        "(VI.1.13-15)", "vector w, x\nrotation_operator(w, t, x)", 3, 3,
+        [](const builtin& b, const args_t& a, context&) {
+            const ex w = vector_arg(a, 0, b), t = arg_ex(a, 1, b), x = vector_arg(a, 2, b);
+            if (w.is_zero()) return value(x);
+            const GiNaC::possymbol W("|w|");
+            const mechanics::rotation_operator_algebra R(W);
+            const element E = R.exp_minus_Kt(t);
+            auto c = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
+            return value(c(0) * x + c(1) * cross(w, x) + c(2) * cross(w, cross(w, x)));
         });
     add(r, "vector_series", "vector_series(e, w, n)",
         "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "
