@@ -269,7 +269,7 @@ TEST(MulticomplexExact, InverseIII_1_57_LogIII_1_53_N4) {
     const coeffs x = mc_from(*A, ax);
     EXPECT_TRUE(eq(A->exp(A->log(x), 1), x));
     // components at multiples of pi/4 as well (moduli sqrt 8, sqrt 18, ...): at 40 digits
-    // here; the exact round trip is ExactBugs.ExpLogRoundTripWithSurdModuli below
+    // here; the exact round trip is MulticomplexExact.ExpLogRoundTripWithSurdModuli below
     std::vector<std::pair<ex, ex>> c;
     const std::pair<int, int> pool[] = {{1, 0}, {2, 2}, {0, 3}, {-1, 0}, {0, -2}, {-3, 3}, {5, -5}, {4, 0}};
     for (std::size_t p = 0; p < 16; ++p) c.emplace_back(pool[p % 8].first * (1 + p / 8), pool[p % 8].second * (1 + p / 8));
@@ -1122,14 +1122,11 @@ TEST(FamilyAgreementExact, WalshComplex3) {
 // Engine defect found by these tests (reported, not fixed here)
 // =====================================================================================
 
-// exp(log w) = w must hold EXACTLY for exact input (docs/algebras.md: the examples check
-// "a logarithm by exp(log(w)) == w"; scalar.h: exp_scalar takes c log(y) out as y^c "so
-// that exp(log w) gives back rational coordinates"). It fails when a component modulus
-// is irrational: for w = 2 + 2 i0 in multicomplex(0), log w = log(8)/2 + i0 pi/4 and
-// exp(log w) comes back as sqrt(2)*sqrt(8)/2 + sqrt(2)*sqrt(8)/2 i0, which is the right
-// value (2 + 2 i0) but which is_zero_scalar / algebra::equal cannot reduce (GiNaC does not
-// combine sqrt(2)*sqrt(8) = 4), so `exp(log(w)) == w` is false, also in the language.
-TEST(ExactBugs, ExpLogRoundTripWithSurdModuli) {
+// exp(log w) = w holds EXACTLY for exact input also where a component modulus is
+// irrational: for w = 2 + 2 i0 in multicomplex(0), log w = log(8)/2 + i0 pi/4, and
+// exp(log w) must come back as 2 + 2 i0 (exp_scalar writes 8^(1/2) over primes, so
+// sqrt(2)*sqrt(8) = 4 cancels; a regression test of that fix).
+TEST(MulticomplexExact, ExpLogRoundTripWithSurdModuli) {
     {
         auto A = multicomplex::make(0);
         const coeffs w = {2, 2};  // 2 + 2 i0
