@@ -120,6 +120,13 @@ TEST(OutputCode, CcodeOfAVectorNeedsComponents) {
     EXPECT_EQ(out_of("vector w; print(ccode(subs(w x [1, 0, 0], [w = [a, b, c]])))"), "{0.0, c, -b}\n");
 }
 
+TEST(OutputCode, CodeIsDeterministicAndUsesDoubleLiterals) {
+    const std::string a = out_of("u := y + x; print(ccode(sin(x)^2 + 1/(3*y) - x*y)); print(pycode(x - y^2))");
+    const std::string b = out_of("u := x + y; print(ccode(-y*x + 1/(3*y) + sin(x)^2)); print(pycode(-y^2 + x))");
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(a, "-x*y + pow(sin(x), 2.0) + 1.0/3.0/y\n-y**2 + x\n");
+}
+
 TEST(OutputCode, CcodeOfVectorComponentsEvaluates) {
     if (!have_compiler()) GTEST_SKIP() << "no c++ compiler";
     std::string code = out_of("vector w, v; print(ccode(subs(w x v, [w = [x, y, 2], v = [1, x*y, 3]])))");

@@ -374,36 +374,42 @@ void check_codable(const ex& e, const char* fn) {
         throw type_error(std::string(fn) + ": an equation has no code; give one side (lhs(e) or rhs(e))");
 }
 
-std::string c_scalar(const ex& e) {
-    // Pi as M_PI; realsymbols keep their names
-    const ex f = e.subs(GiNaC::lst{GiNaC::Pi}, GiNaC::lst{GiNaC::symbol("M_PI")});
-    std::ostringstream os;
-    f.print(GiNaC::print_csrc_double(os));
-    std::string t = os.str();
-    const std::size_t a = t.find_first_not_of(' ');
-    return a == std::string::npos ? t : t.substr(a);
-}
-
 out_t py(const ex& e);
+
+// The code printer writes Python (NumPy) or, when c_style is set, C with double
+// arithmetic. Sums follow the canonical term order, products sort their factors.
+thread_local bool c_style = false;
 
 std::string pparen(const out_t& o, int need) { return o.lvl < need ? "(" + o.text + ")" : o.text; }
 
+/// An integer literal: 3 in Python, 3.0 in C (no integer division).
+std::string int_lit(const numeric& n) { return c_style ? num_text(n) + ".0" : num_text(n); }
+
 out_t py_numeric(const numeric& x) {
-    if (x.is_integer()) return {num_text(x), x.is_negative() ? l_sum : l_atom};
-    if (x.is_rational()) return {num_text(x.numer()) + "/" + num_text(x.denom()), l_sum};
+    if (x.is_integer()) return {int_lit(x), x.is_negative() ? l_sum : l_atom};
+    if (x.is_rational()) return {int_lit(x.numer()) + "/" + int_lit(x.denom()), l_sum};
     if (x.is_real()) {
         std::string t = num_text(x);
         return {t, x.is_negative() ? l_sum : l_atom};
     }
+    if (c_style) throw type_error("ccode: complex numbers have no C double code: " + num_text(x));
     return {"complex(" + py_numeric(x.real()).text + ", " + py_numeric(x.imag()).text + ")", l_atom};
 }
 
 std::string py_fn(const std::string& n) {
+    static const std::set<std::string> same = {"sin", "cos", "tan", "sinh", "cosh", "tanh", "exp", "log", "sqrt"};
+    if (c_style) {
+        static const std::map<std::string, std::string> c = {
+            {"asin", "asin"}, {"acos", "acos"}, {"atan", "atan"}, {"asinh", "asinh"}, {"acosh", "acosh"},
+            {"atanh", "atanh"}, {"abs", "fabs"}, {"atan2", "atan2"}};
+        if (auto it = c.find(n); it != c.end()) return it->second;
+        if (same.count(n)) return n;
+        throw type_error("ccode: the function " + n + " has no C equivalent here");
+    }
     static const std::map<std::string, std::string> m = {
         {"asin", "arcsin"}, {"acos", "arccos"}, {"atan", "arctan"}, {"asinh", "arcsinh"},
         {"acosh", "arccosh"}, {"atanh", "arctanh"}, {"abs", "abs"}, {"atan2", "arctan2"}};
     if (auto it = m.find(n); it != m.end()) return "numpy." + it->second;
-    static const std::set<std::string> same = {"sin", "cos", "tan", "sinh", "cosh", "tanh", "exp", "log", "sqrt"};
     if (same.count(n)) return "numpy." + n;
     throw type_error("pycode: the function " + n + " has no NumPy equivalent here");
 }
@@ -417,8 +423,8 @@ out_t py(const ex& e) {
         return {r, l_atom};
     }
     if (is_a<GiNaC::constant>(e)) {
-        if (e.is_equal(GiNaC::Pi)) return {"numpy.pi", l_atom};
-        if (e.is_equal(GiNaC::Euler)) return {"numpy.euler_gamma", l_atom};
+        if (e.is_equal(GiNaC::Pi)) return {c_style ? "M_PI" : "numpy.pi", l_atom};
+        if (e.is_equal(GiNaC::Euler) && !c_style) return {"numpy.euler_gamma", l_atom};
         return {py_numeric(ex_to<numeric>(e.evalf())).text, l_atom};
     }
     if (is_a<GiNaC::add>(e)) {
@@ -451,19 +457,21 @@ out_t py(const ex& e) {
         const bool neg = negative_numeric(c);
         const numeric a = neg ? numeric(-c) : c;
         if (a.is_rational()) {
-            if (a.numer() != 1 || num.empty()) num.insert(num.begin(), num_text(a.numer()));
-            if (a.denom() != 1) den.insert(den.begin(), num_text(a.denom()));
+            if (a.numer() != 1 || num.empty()) num.insert(num.begin(), int_lit(a.numer()));
+            if (a.denom() != 1) den.insert(den.begin(), int_lit(a.denom()));
         } else if (a != 1) {
             num.insert(num.begin(), pparen(py_numeric(a), l_power));
         }
         std::string s;
         for (std::size_t i = 0; i < num.size(); ++i) s += (i ? "*" : "") + num[i];
+        if (c_style && num.empty()) s = "1.0";
         for (const auto& d : den) s += "/" + d;
         return {(neg ? "-" : "") + s, neg ? l_sum : l_product};
     }
     if (is_a<GiNaC::power>(e)) {
         const ex b = e.op(0), n = e.op(1);
-        if (n.is_equal(GiNaC::numeric(1, 2))) return {"numpy.sqrt(" + py(b).text + ")", l_atom};
+        if (n.is_equal(GiNaC::numeric(1, 2))) return {std::string(c_style ? "sqrt(" : "numpy.sqrt(") + py(b).text + ")", l_atom};
+        if (c_style) return {"pow(" + py(b).text + ", " + py(n).text + ")", l_atom};
         // ** binds tighter than unary minus: (-2)**2, x**(-1)
         return {pparen(py(b), l_atom) + "**" + pparen(py(n), l_atom), l_power};
     }
@@ -472,7 +480,7 @@ out_t py(const ex& e) {
         for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + py(e.op(i)).text;
         return {s + ")", l_atom};
     }
-    throw type_error("pycode: cannot write " + print_ex(e) + " as Python code");
+    throw type_error(std::string(c_style ? "ccode" : "pycode") + ": cannot write " + print_ex(e) + " as code");
 }
 
 /// The components of a vector literal (3x1 or 1x3 matrix), or nothing.
@@ -538,7 +546,15 @@ std::string latex_value(const value& v) {
 
 std::string c_code(const ex& e) {
     check_codable(e, "ccode");
-    return c_scalar(e);
+    c_style = true;
+    try {
+        std::string t = py(e).text;
+        c_style = false;
+        return t;
+    } catch (...) {
+        c_style = false;
+        throw;
+    }
 }
 
 std::string python_code(const ex& e) {
