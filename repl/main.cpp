@@ -31,12 +31,18 @@ const char* usage_text =
     "\n"
     "options:\n"
     "  -e STATEMENTS   run STATEMENTS (may be given several times, in order with FILEs)\n"
+    "  --format FMT    how results are shown: text (default), latex, json (one JSON\n"
+    "                  object per result on stdout, per error on stderr)\n"
+    "  --echo          print each statement (\"> \" and its source text) before its result\n"
+    "  --stop-on-error stop at the first failed statement (exit status 1)\n"
+    "  --no-caret      error reports without the source line and caret\n"
     "  --doc           print the Markdown reference of all functions and exit\n"
     "  --version       print the version and exit\n"
     "  --help          print this help and exit\n"
     "\n"
-    "Errors are reported on standard error as FILE:LINE:COL: error: MESSAGE; the run\n"
-    "continues with the next statement. Exit status 1 if any statement failed.\n";
+    "Errors are reported on standard error as FILE:LINE:COL: error: MESSAGE, then the\n"
+    "source line with a caret under the column; the run continues with the next\n"
+    "statement (unless --stop-on-error). Exit status 1 if any statement failed.\n";
 
 int interactive(symrep::lang::session& s) {
     std::cout << "symrep " SYMREP_VERSION " -- help() lists the functions, quit with Ctrl-D\n";
@@ -60,8 +66,42 @@ int interactive(symrep::lang::session& s) {
 
 int main(int argc, char** argv) {
     std::vector<std::pair<bool, std::string>> jobs;  // (is_code, text/path)
+    symrep::lang::output_options opts;
+    opts.caret = true;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
+        if (a == "--format" || a.rfind("--format=", 0) == 0) {
+            std::string f;
+            if (a == "--format") {
+                if (i + 1 >= argc) {
+                    std::cerr << "symrep: --format needs an argument (text, latex or json)\n" << usage_text;
+                    return 2;
+                }
+                f = argv[++i];
+            } else {
+                f = a.substr(9);
+            }
+            if (f == "text") opts.format = symrep::lang::output_options::text;
+            else if (f == "latex") opts.format = symrep::lang::output_options::latex;
+            else if (f == "json") opts.format = symrep::lang::output_options::json;
+            else {
+                std::cerr << "symrep: unknown format '" << f << "' (text, latex or json)\n" << usage_text;
+                return 2;
+            }
+            continue;
+        }
+        if (a == "--echo") {
+            opts.echo = true;
+            continue;
+        }
+        if (a == "--stop-on-error") {
+            opts.stop_on_error = true;
+            continue;
+        }
+        if (a == "--no-caret") {
+            opts.caret = false;
+            continue;
+        }
         if (a == "--help" || a == "-h") {
             std::cout << usage_text;
             return 0;
@@ -92,6 +132,7 @@ int main(int argc, char** argv) {
     }
     std::ios::sync_with_stdio(true);
     symrep::lang::session s(std::cout, std::cerr);
+    s.options() = opts;
     if (jobs.empty()) {
         if (isatty(STDIN_FILENO)) return interactive(s);
         std::stringstream ss;
@@ -100,6 +141,7 @@ int main(int argc, char** argv) {
         return s.failures() ? 1 : 0;
     }
     for (const auto& [code, text] : jobs) {
+        if (s.stopped()) break;
         if (code) s.run_string(text, "<command line>");
         else s.run_file(text);
     }

@@ -84,6 +84,7 @@ void register_multicomplex_builtins(registry& r); // io/builtins_multicomplex.cp
 void register_sobrero_builtins(registry& r);      // io/builtins_sobrero.cpp
 void register_walsh_builtins(registry& r);        // io/builtins_walsh.cpp
 void register_polynomial_builtins(registry& r);   // io/builtins_polynomial.cpp
+void register_output_builtins(registry& r);       // io/output.cpp
 void register_check_builtins(registry& r);        // io/builtins_check.cpp: expect, expect_near
 void register_mechanics_builtins(registry& r);    // io/builtins_mechanics.cpp: ode, check, eval, verify
 void register_rules_builtins(registry& r);        // io/builtins_rules.cpp: load_rules, rewrite, rules

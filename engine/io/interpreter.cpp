@@ -381,11 +381,12 @@ value binary_op(const std::string& op, const value& a, const value& b) {
 // ---------------------------------------------------------------------------
 // session
 
-session::session(std::ostream& out, std::ostream& err) : out_(&out), err_(&err) {
+session::session(std::ostream& out, std::ostream& err)
+    : out_(&out), err_(&err), digits_at_start_(GiNaC::Digits) {
     register_all_builtins(reg_);
 }
 session::session() : session(std::cout, std::cerr) {}
-session::~session() = default;
+session::~session() { GiNaC::Digits = digits_at_start_; }  // Digits := n is per session
 
 GiNaC::ex session::symbol(const std::string& name) {
     auto it = symbols_.find(name);
@@ -413,13 +414,92 @@ std::string session::resolve_path(const std::string& path) const {
     return (fs::path(dir) / p).string();
 }
 
+namespace {
+
+/// The text of line `line` (1-based) of `text`, without its newline.
+std::string line_of(const std::string& text, int line) {
+    std::size_t start = 0;
+    for (int l = 1; l < line; ++l) {
+        start = text.find('\n', start);
+        if (start == std::string::npos) return {};
+        ++start;
+    }
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    return text.substr(start, end - start);
+}
+
+/// Offset of (line, column) in text (both 1-based), clamped to the text.
+std::size_t offset_of(const std::string& text, int line, int column) {
+    std::size_t start = 0;
+    for (int l = 1; l < line; ++l) {
+        start = text.find('\n', start);
+        if (start == std::string::npos) return text.size();
+        ++start;
+    }
+    return std::min(text.size(), start + static_cast<std::size_t>(std::max(column, 1) - 1));
+}
+
+std::string trimmed(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t\r\n;");
+    if (a == std::string::npos) return {};
+    const std::size_t b = s.find_last_not_of(" \t\r\n;");
+    return s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+std::string json_quote(const std::string& s) {
+    std::string q = "\"";
+    for (unsigned char c : s) {
+        switch (c) {
+            case '"': q += "\\\""; break;
+            case '\\': q += "\\\\"; break;
+            case '\n': q += "\\n"; break;
+            case '\t': q += "\\t"; break;
+            case '\r': q += "\\r"; break;
+            case '\b': q += "\\b"; break;
+            case '\f': q += "\\f"; break;
+            default:
+                if (c < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    q += buf;
+                } else {
+                    q += static_cast<char>(c);
+                }
+        }
+    }
+    return q + "\"";
+}
+
 void session::report(const source_location& where, const std::string& msg) {
     ++failures_;
+    if (opts_.stop_on_error) stopped_ = true;
+    if (opts_.format == output_options::json) {
+        *err_ << "{\"error\": " << json_quote(msg) << ", \"file\": " << json_quote(where.file)
+              << ", \"line\": " << where.line << ", \"column\": " << where.column << "}\n";
+        err_->flush();
+        return;
+    }
     *err_ << where.file << ":" << where.line << ":" << where.column << ": error: " << msg << "\n";
+    if (opts_.caret) {
+        auto it = sources_.find(where.file);
+        if (it != sources_.end() && where.line >= 1) {
+            std::string l = line_of(it->second, where.line);
+            if (!l.empty() && l.back() == '\r') l.pop_back();
+            if (!l.empty() && where.column >= 1 && static_cast<std::size_t>(where.column) <= l.size() + 1) {
+                std::string pad;
+                for (int i = 0; i + 1 < where.column; ++i) pad += l[static_cast<std::size_t>(i)] == '\t' ? '\t' : ' ';
+                *err_ << "    " << l << "\n    " << pad << "^\n";
+            }
+        }
+    }
     err_->flush();
 }
 
 int session::run_file(const std::string& path) {
+    if (stopped_) return 0;
     const std::string full = resolve_path(path);
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -451,9 +531,11 @@ int session::run_file(const std::string& path) {
 
 int session::run_string(const std::string& text, const std::string& name) {
     const int before = failures_;
+    if (stopped_) return 0;
     parser p(text, name);
     files_.push_back(name);
-    while (!p.at_end()) {
+    sources_[name] = text;
+    while (!p.at_end() && !stopped_) {
         node_ptr s;
         try {
             s = p.next_statement();
@@ -464,6 +546,14 @@ int session::run_string(const std::string& text, const std::string& name) {
         }
         if (!s) continue;
         const source_location here{name, s->line, s->column};
+        if (opts_.echo) {
+            const auto [bl, bc] = p.statement_begin();
+            const auto [el, ec] = p.statement_end();
+            const std::size_t a = offset_of(text, bl, bc);
+            std::size_t b = offset_of(text, el, ec);
+            if (b <= a) b = text.find('\n', a) == std::string::npos ? text.size() : text.find('\n', a);
+            *out_ << "> " << trimmed(text.substr(a, b - a)) << "\n";
+        }
         try {
             exec(*s, true);
         } catch (const script_error& e) {
@@ -664,11 +754,29 @@ void session::exec(const node& stmt, bool echo) {
         if (v.is_none())
             throw script_error("cannot assign nothing to '" + stmt.text + "': the right side has no value",
                                {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+        if (stmt.text == "Digits") {
+            // Digits := n sets the precision of floats (evalf, float literals)
+            if (!v.is_ex() || !is_a<numeric>(v.as_ex()) || !ex_to<numeric>(v.as_ex()).is_pos_integer() ||
+                ex_to<numeric>(v.as_ex()) > 100000)
+                throw script_error("Digits must be a positive integer (at most 100000), not " +
+                                       (v.is_ex() ? print_ex(v.as_ex()) : article(v)),
+                                   {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+            GiNaC::Digits = ex_to<numeric>(v.as_ex()).to_long();
+        }
         set(stmt.text, std::move(v));
         return;
     }
     value v = eval(stmt);
-    if (echo && !v.is_none()) *out_ << print_value(v, true) << "\n";
+    if (!echo || v.is_none()) return;
+    switch (opts_.format) {
+        case output_options::text: *out_ << print_value(v, true) << "\n"; break;
+        case output_options::latex: *out_ << latex_value(v) << "\n"; break;
+        case output_options::json:
+            *out_ << "{\"file\": " << json_quote(files_.empty() ? "<string>" : files_.back())
+                  << ", \"line\": " << stmt.line << ", \"kind\": " << json_quote(v.kind())
+                  << ", \"value\": " << json_quote(print_value(v, false)) << "}\n";
+            break;
+    }
 }
 
 value session::eval(const node& n) {

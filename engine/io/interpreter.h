@@ -37,6 +37,21 @@ public:
     std::exception_ptr original;
 };
 
+/// How a session shows results and errors (the command-line options of symrep).
+struct output_options {
+    enum format_t { text, latex, json };
+    /// text: the canonical printer; latex: latex_value(); json: one object per
+    /// result {"file", "line", "kind", "value"} on out(), errors as
+    /// {"error", "file", "line", "column"} on err(), one per line.
+    format_t format = text;
+    /// Print each statement's source text (prefixed "> ") before its result.
+    bool echo = false;
+    /// After a failed statement, run nothing more (every later run_string/run_file returns at once).
+    bool stop_on_error = false;
+    /// Follow each text error report with its source line and a caret under the column.
+    bool caret = false;
+};
+
 class session : public context {
 public:
     /// A session writing results to `out` and error reports to `err`; all
@@ -67,6 +82,11 @@ public:
     value evaluate(const std::string& text);
     /// Total number of failed statements since the session started.
     int failures() const { return failures_; }
+    /// Output options (format, echo, stop on error, caret); default: plain text.
+    output_options& options() { return opts_; }
+    const output_options& options() const { return opts_; }
+    /// True once a statement failed with options().stop_on_error set.
+    bool stopped() const { return stopped_; }
 
     // --- state ---------------------------------------------------------------
     void set(const std::string& name, value v);
@@ -110,6 +130,10 @@ private:
     std::vector<std::string> files_;  ///< names of the scripts being run
     std::string base_dir_;
     int failures_ = 0;
+    output_options opts_;
+    bool stopped_ = false;
+    long digits_at_start_;  ///< GiNaC::Digits, restored by the destructor
+    std::map<std::string, std::string> sources_;  ///< script texts by name (for the caret)
     std::shared_ptr<symrep::rules::rule_set> rules_;  ///< created by rewrite_rules()
 };
 

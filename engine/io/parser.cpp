@@ -65,6 +65,7 @@ node_ptr parser::next_statement() {
     depth_ = 0;
     while (peek().kind == tok::separator) get();
     if (peek().kind == tok::end) return nullptr;
+    begin_ = {peek().line, peek().column};
     node_ptr s;
     if (peek().kind == tok::ident && (peek().text == "vector" || peek().text == "positive") &&
         peek(1).kind == tok::ident) {
@@ -80,6 +81,7 @@ node_ptr parser::next_statement() {
         s = expr();
     }
     const token& t = peek();
+    end_ = {t.line, t.column};
     if (t.kind == tok::separator) {
         get();
     } else if (t.kind != tok::end) {

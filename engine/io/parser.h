@@ -33,6 +33,10 @@ public:
     node_ptr next_statement();
     /// Skips the rest of a broken statement (up to and including its separator).
     void recover();
+    /// Where the last statement returned by next_statement() starts (its first
+    /// token) and ends (its separator or the end of the text): line, column.
+    std::pair<int, int> statement_begin() const { return begin_; }
+    std::pair<int, int> statement_end() const { return end_; }
 
 private:
     const token& peek(std::size_t k = 0) const;
@@ -55,6 +59,7 @@ private:
     std::size_t pos_ = 0;
     int depth_ = 0;  ///< nesting of unary/primary, limited to keep the stack safe
     std::string file_;
+    std::pair<int, int> begin_{1, 1}, end_{1, 1};
 };
 
 /// Parses a whole text; throws the first syntax_error.

@@ -250,6 +250,7 @@ struct term_text {
     bool symbolic;
     std::string monomial;
     std::map<std::string, numeric> powers;  // symbol name -> exponent
+    std::size_t index = 0;                  // of the term in e
 };
 
 // Exponents of the symbols in a term (powers of symbols with numeric exponents).
@@ -280,7 +281,7 @@ int lex_compare(const std::map<std::string, numeric>& a, const std::map<std::str
     return 0;
 }
 
-printed pr_sum(const ex& e) {
+std::vector<term_text> sorted_terms(const ex& e) {
     std::vector<term_text> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) {
         const ex t = e.op(i);
@@ -297,6 +298,7 @@ printed pr_sum(const ex& e) {
         tt.symbolic = has_symbol(t);
         tt.monomial = rest.empty() ? std::string() : pr_product(1, rest).text;
         symbol_powers(rest, tt.powers);
+        tt.index = i;
         terms.push_back(std::move(tt));
     }
     std::sort(terms.begin(), terms.end(), [](const term_text& a, const term_text& b) {
@@ -308,6 +310,11 @@ printed pr_sum(const ex& e) {
         if (a.negative != b.negative) return !a.negative;
         return a.body < b.body;
     });
+    return terms;
+}
+
+printed pr_sum(const ex& e) {
+    const std::vector<term_text> terms = sorted_terms(e);
     std::string s;
     for (std::size_t i = 0; i < terms.size(); ++i) {
         if (i == 0) s += terms[i].negative ? "-" : "";
@@ -410,6 +417,13 @@ std::string print_ex(const ex& e) {
     if (is_a<GiNaC::relational>(e) && (involves_vectors(e.op(0)) || involves_vectors(e.op(1))))
         return print_ex(e.op(0)) + " = " + print_ex(e.op(1));
     return pr(e).text;
+}
+
+std::vector<ex> canonical_terms(const ex& e) {
+    if (!is_a<GiNaC::add>(e)) return {e};
+    std::vector<ex> out;
+    for (const term_text& t : sorted_terms(e)) out.push_back(e.op(t.index));
+    return out;
 }
 
 std::string print_element(const element& w) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <ginac/ginac.h>
 
@@ -30,5 +31,23 @@ std::string print_element(const element& w);
 /// `quote_strings`, as in the echo of an expression statement and inside lists;
 /// print() shows top-level strings raw. `nothing` prints as the empty string.
 std::string print_value(const value& v, bool quote_strings = true);
+
+/// The terms of a sum in the order print_ex shows them ({e} for a non-sum).
+std::vector<GiNaC::ex> canonical_terms(const GiNaC::ex& e);
+
+// --- other output formats (engine/io/output.cpp) ------------------------------
+/// LaTeX of an expression: sums in the canonical term order, products with their
+/// factors sorted, vectors bold (\boldsymbol{r}_0), cross/dot as \times/\cdot,
+/// norms \|w\|, matrices as pmatrix.
+std::string latex_ex(const GiNaC::ex& e);
+/// LaTeX of any value (elements: sum of coefficient times basis names; lists in brackets).
+std::string latex_value(const value& v);
+/// C code (double arithmetic, <math.h>) of a scalar expression; throws type_error
+/// for expressions with abstract vectors (naming them).
+std::string c_code(const GiNaC::ex& e);
+/// Python code (NumPy functions as numpy.sin, ...) of a scalar expression.
+std::string python_code(const GiNaC::ex& e);
+/// A JSON string literal ("..." with \" \\ \n \uXXXX escapes).
+std::string json_quote(const std::string& s);
 
 }  // namespace symrep::lang
