@@ -17,6 +17,7 @@ void register_all_builtins(registry& r) {
     register_walsh_builtins(r);
     register_multicomplex_builtins(r);
     register_polynomial_builtins(r);
+    register_plot_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {
