@@ -78,6 +78,20 @@ TEST(Plot, TrajectoryAndHodographOfVectorFunctions) {
     EXPECT_NE(hodo.find("dz/dt = 0.2"), std::string::npos);
 }
 
+TEST(Plot, NonFiniteSamplesAreLeftOut) {
+    const std::string d = fresh_dir("nan");
+    test_session t;
+    t.val("plot(log(t), [], t = [-1, 1], \"" + d + "/half.svg\", 101)");  // NaN for t <= 0: half a curve
+    EXPECT_TRUE(is_svg(slurp(d + "/half.svg")));
+    EXPECT_NE(what_of([&] { t.val("plot(log(t), [], t = [-2, -1], \"" + d + "/none.svg\")"); })
+                  .find("no sample is a finite number"),
+              std::string::npos);
+    EXPECT_FALSE(fs::exists(d + "/none.svg"));
+    EXPECT_NE(what_of([&] { t.val("plot(t, [], t = [0, 1], \"" + d + "/n.svg\", 1)"); }).find("plot"),
+              std::string::npos);  // at least 2 samples
+    EXPECT_FALSE(fs::exists(d + "/n.svg"));
+}
+
 TEST(Plot, SamePictureTwiceLeavesTheFileAlone) {
     const std::string f = fresh_dir("twice") + "/p.png";
     test_session t;

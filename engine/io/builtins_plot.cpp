@@ -106,7 +106,7 @@ std::string range_text(const time_range& tr) {
 }
 
 long points_arg(const args_t& a, std::size_t i, const builtin& b, long dflt) {
-    return a.size() > i ? arg_int(a, i, b, 2, 10000000) : dflt;
+    return a.size() > i ? arg_int(a, i, b, 2, 1000000) : dflt;
 }
 
 std::string title_arg(const args_t& a, std::size_t i, const builtin& b, std::string dflt) {
