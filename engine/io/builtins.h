@@ -88,6 +88,7 @@ void register_output_builtins(registry& r);       // io/output.cpp
 void register_check_builtins(registry& r);        // io/builtins_check.cpp: expect, expect_near
 void register_mechanics_builtins(registry& r);    // io/builtins_mechanics.cpp: ode, check, eval, verify
 void register_rules_builtins(registry& r);        // io/builtins_rules.cpp: load_rules, rewrite, rules
+void register_plot_builtins(registry& r);         // io/builtins_plot.cpp: plot, trajectory, hodograph
 
 /// solve(P) for a problem made by ode(...): the exact solution (io/builtins_mechanics.cpp).
 value solve_problem(const value& p);

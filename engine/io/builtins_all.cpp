@@ -18,6 +18,7 @@ void register_all_builtins(registry& r) {
     register_multicomplex_builtins(r);
     register_polynomial_builtins(r);
     register_output_builtins(r);
+    register_plot_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

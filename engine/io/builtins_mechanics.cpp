@@ -15,6 +15,7 @@
 #include "algebra/scalar.h"
 #include "io/builtins.h"
 #include "io/printer.h"
+#include "io/values.h"
 #include "mechanics/cauchy_problem.h"
 #include "mechanics/rotation_operator_algebra.h"
 #include "numeric/verify.h"
@@ -28,7 +29,6 @@ using args_t = std::vector<value>;
 namespace {
 
 const char* const section = "Vectors and mechanics";
-using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
 
 void add(registry& r, std::string name, std::string sig, std::string summary, std::string eq, std::string example,
          std::size_t mn, std::size_t mx, builtin_body fn) {
@@ -53,111 +53,6 @@ const mechanics::cauchy_problem& problem_arg(const args_t& a, std::size_t i, con
         throw type_error(b.name + ": argument " + std::to_string(i + 1) + " must be a problem made by ode(...), not " +
                          a[i].a_kind() + " (usage: " + b.signature + ")");
     return a[i].as_problem();
-}
-
-// ---------------------------------------------------------------- values
-// [w = [..], phi = 0.85, w0 = sqrt(9.81/67), ...]: vector and scalar values; a
-// value may use the others (w = W [cos(phi), 0, sin(phi)] with phi given).
-struct data_values {
-    vmap vectors;
-    GiNaC::exmap scalars;
-};
-
-data_values read_values(const value& v, const builtin& b, std::size_t argno) {
-    std::vector<ex> rels;
-    auto take = [&](const value& x) {
-        if (!x.is_ex() || !GiNaC::is_a<GiNaC::relational>(x.as_ex()))
-            throw type_error(b.name + ": argument " + std::to_string(argno + 1) +
-                             " must list values as name = value, found " + print_value(x));
-        rels.push_back(x.as_ex());
-    };
-    if (v.is_list()) for (const value& x : v.as_list()) take(x);
-    else take(v);
-    data_values d;
-    for (const ex& r : rels) {
-        const ex lhs = r.lhs();
-        if (is_vector_symbol(lhs)) {
-            if (!is_vector_literal(r.rhs()) && !r.rhs().is_zero())
-                throw type_error(b.name + ": the value of the vector " + print_ex(lhs) +
-                                 " must be a vector [x, y, z], not " + print_ex(r.rhs()));
-            d.vectors[lhs] = r.rhs().is_zero() ? vector_literal(0, 0, 0) : r.rhs();
-        } else if (GiNaC::is_a<GiNaC::symbol>(lhs)) {
-            if (is_vector_literal(r.rhs()))
-                throw type_error(b.name + ": " + print_ex(lhs) + " is a scalar (declare it with 'vector " +
-                                 print_ex(lhs) + "' to give it a vector value)");
-            d.scalars[lhs] = r.rhs();
-        } else {
-            throw type_error(b.name + ": the left side of " + print_ex(r) + " must be a name");
-        }
-    }
-    // values that use other values: substitute until nothing changes
-    for (int pass = 0; pass < 16; ++pass) {
-        bool changed = false;
-        for (auto& [k, x] : d.scalars) {
-            const ex y = x.subs(d.scalars);
-            if (!y.is_equal(x)) { x = y; changed = true; }
-        }
-        for (auto& [k, x] : d.vectors) {
-            const ex y = x.subs(d.scalars);
-            if (!y.is_equal(x)) { x = y; changed = true; }
-        }
-        if (!changed) break;
-    }
-    return d;
-}
-
-// e with every value put in: vectors by components, then scalars. The result is
-// a 3x1 matrix for a vector e.
-ex put_values(const ex& e, const data_values& d) {
-    ex c = vector_symbols(e).empty() ? e : subs_components(e, d.vectors);
-    return c.subs(d.scalars);
-}
-
-// Where the values make e singular (w = 0 in sin(|w| t)/|w|), its limit: each
-// zero value x becomes lambda x' (x' a fixed generic direction or 1) and the
-// lambda^0 term of the series in lambda is taken (the exact limit lambda -> 0).
-ex put_values_limit(const ex& e, const data_values& d) {
-    try {
-        return put_values(e, d);
-    } catch (const std::exception&) {
-    }
-    const GiNaC::possymbol lambda("lambda");
-    data_values dl = d;
-    bool any = false;
-    for (auto& [k, x] : dl.vectors)
-        if (GiNaC::normal(x.op(0)).is_zero() && GiNaC::normal(x.op(1)).is_zero() && GiNaC::normal(x.op(2)).is_zero()) {
-            x = vector_literal(lambda * 3, lambda * 5, lambda * 7) / 7;
-            any = true;
-        }
-    for (auto& [k, x] : dl.scalars)
-        if (GiNaC::normal(x).is_zero()) { x = lambda; any = true; }
-    if (!any) return put_values(e, d);  // rethrows the original error
-    const ex c = put_values(e, dl);
-    auto lim = [&](const ex& x) {
-        const ex s = GiNaC::series_to_poly(GiNaC::normal(x).series(lambda == 0, 1));
-        return s.subs(lambda == 0);
-    };
-    if (GiNaC::is_a<GiNaC::matrix>(c)) {
-        GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(c);
-        for (unsigned i = 0; i < m.rows(); ++i) m(i, 0) = lim(m(i, 0));
-        return m;
-    }
-    return lim(c);
-}
-
-std::vector<ex> components(const ex& c) {
-    if (!GiNaC::is_a<GiNaC::matrix>(c)) return {c};
-    std::vector<ex> out;
-    for (unsigned i = 0; i < c.nops(); ++i) out.push_back(c.op(i));
-    return out;
-}
-
-double to_double(const ex& x, const builtin& b, const std::string& what) {
-    const ex y = GiNaC::evalf(x);
-    if (!GiNaC::is_a<GiNaC::numeric>(y) || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
-        throw type_error(b.name + ": " + what + " does not evaluate to a real number: " + message_text(y) +
-                         " (give every symbol a value)");
-    return GiNaC::ex_to<GiNaC::numeric>(y).to_double();
 }
 
 value numbers(const ex& c, const builtin& b) {

@@ -1,0 +1,40 @@
+// symrep/io/values.h -- numeric values for symbols, shared by eval, verify and the plots.
+//
+//   [w = [0, 0, 1], phi = 0.85, w0 = sqrt(9.81/67), ...]
+//
+// read_values() reads such a list (vectors as [x, y, z], scalars as expressions; a
+// value may use the others); put_values_limit() puts them into an expression
+// (vectors by components, giving a 3x1 matrix for a vector expression) and takes
+// the exact limit where the values make a closed form singular (w = 0 in
+// sin(|w| t)/|w|).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "io/builtins.h"
+
+namespace symrep::lang {
+
+using vmap = std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>;
+
+struct data_values {
+    vmap vectors;            ///< vector symbol -> [x, y, z]
+    GiNaC::exmap scalars;    ///< scalar symbol -> value
+};
+
+/// Reads argument `argno` (0-based, for messages) of builtin b: a relation name = value or a list of them.
+data_values read_values(const value& v, const builtin& b, std::size_t argno);
+/// e with every value put in: vectors by components, then scalars (a 3x1 matrix for a vector e).
+GiNaC::ex put_values(const GiNaC::ex& e, const data_values& d);
+/// put_values, or where that fails because a value is 0, the exact limit at that value.
+GiNaC::ex put_values_limit(const GiNaC::ex& e, const data_values& d);
+/// The entries of a matrix (row by row), or {c} for a scalar.
+std::vector<GiNaC::ex> components(const GiNaC::ex& c);
+/// evalf(x) as a double; type_error naming b and `what` when x is not a real number.
+double to_double(const GiNaC::ex& x, const builtin& b, const std::string& what);
+
+}  // namespace symrep::lang
