@@ -21,8 +21,8 @@ std::string sexpr(const node& n) {
         }
         case node::index: return "(at " + sexpr(*n.kids[0]) + " " + sexpr(*n.kids[1]) + ")";
         case node::assign: return "(:= " + n.text + " " + sexpr(*n.kids[0]) + ")";
-        case node::call: case node::list: {
-            std::string s = n.kind == node::call ? "(" + n.text : "(list";
+        case node::call: case node::list: case node::declare: {
+            std::string s = n.kind == node::call ? "(" + n.text : n.kind == node::list ? "(list" : "(" + n.text;
             for (const auto& k : n.kids) s += " " + sexpr(*k);
             return s + ")";
         }
@@ -113,4 +113,18 @@ TEST(Parser, RelationsDoNotChain) {
     EXPECT_THROW(parse_program("a = b = c", "x"), symrep::syntax_error);
     EXPECT_THROW(parse_program("f(1,", "x"), symrep::syntax_error);
     EXPECT_THROW(parse_program("\"open", "x"), symrep::syntax_error);
+}
+
+// Vectors (thesis Ch. VI): x and . bind tighter than * and group to the right;
+// x is a name where no operand follows; primes belong to names; declarations.
+TEST(Parser, VectorOperatorsPrimesAndDeclarations) {
+    EXPECT_EQ(parse1("w x w x r"), "(x w (x w r))");
+    EXPECT_EQ(parse1("2*w x r'"), "(* 2 (x w r'))");
+    EXPECT_EQ(parse1("(w . g)*w"), "(* (. w g) w)");
+    EXPECT_EQ(parse1("x*x"), "(* x x)");
+    EXPECT_EQ(parse1("r'' + r"), "(+ r'' r)");
+    EXPECT_EQ(parse1("vector a, b"), "(vector a b)");
+    EXPECT_EQ(parse1("positive k"), "(positive k)");
+    EXPECT_EQ(parse1("vector(1)"), "(vector 1)");  // a call, not a declaration
+    EXPECT_THROW(parse_program("vector a'", "x"), symrep::syntax_error);
 }
