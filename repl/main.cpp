@@ -15,11 +15,9 @@
 #include <string>
 #include <vector>
 
-#include <readline/history.h>
-#include <readline/readline.h>
-
 #include "io/interpreter.h"
 #include "io/lexer.h"
+#include "interactive.h"
 
 namespace {
 
@@ -37,24 +35,6 @@ const char* usage_text =
     "\n"
     "Errors are reported on standard error as FILE:LINE:COL: error: MESSAGE; the run\n"
     "continues with the next statement. Exit status 1 if any statement failed.\n";
-
-int interactive(symrep::lang::session& s) {
-    std::cout << "symrep " SYMREP_VERSION " -- help() lists the functions, quit with Ctrl-D\n";
-    std::string pending;
-    for (;;) {
-        char* line = readline(pending.empty() ? "> " : "... ");
-        if (!line) break;
-        std::string l(line);
-        std::free(line);
-        if (!l.empty()) add_history(l.c_str());
-        pending += l + "\n";
-        if (symrep::lang::needs_more_input(pending)) continue;
-        s.run_string(pending, "<stdin>");
-        pending.clear();
-    }
-    std::cout << "\n";
-    return s.failures() ? 1 : 0;
-}
 
 }  // namespace
 
@@ -93,7 +73,7 @@ int main(int argc, char** argv) {
     std::ios::sync_with_stdio(true);
     symrep::lang::session s(std::cout, std::cerr);
     if (jobs.empty()) {
-        if (isatty(STDIN_FILENO)) return interactive(s);
+        if (isatty(STDIN_FILENO)) return symrep::repl::interactive(s);
         std::stringstream ss;
         ss << std::cin.rdbuf();
         s.run_string(ss.str(), "<stdin>");
