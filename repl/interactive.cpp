@@ -149,7 +149,7 @@ bool in_load_string(int start) {
 char** complete(const char* text, int start, int) {
     rl_attempted_completion_over = 1;  // never fall back to file names
     if (in_load_string(start)) {
-        rl_attempted_completion_over = 0;
+        rl_completion_append_character = '\0';  // readline closes the quote itself
         return rl_completion_matches(text, rl_filename_completion_function);
     }
     if (start > 0 && rl_line_buffer[start - 1] == '"') return nullptr;  // other strings

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -98,11 +99,11 @@ struct temp_home {
 /// symrep running in a tmux pane of its own server (unique socket name).
 class terminal {
 public:
-    explicit terminal(const std::string& home) {
+    explicit terminal(const std::string& home, const std::string& cwd = ".") {
         static int counter = 0;
         socket_ = "symrep_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
         const std::string cmd = "env HOME=" + quote(home) + " NO_COLOR=1 TERM=xterm " + quote(SYMREP_BINARY);
-        run(tmux() + " new-session -d -s t -x 160 -y 50 " + quote(cmd));
+        run(tmux() + " new-session -d -s t -x 160 -y 50 -c " + quote(cwd) + " " + quote(cmd));
     }
     ~terminal() { run(tmux() + " kill-server"); }
     /// Types `text` literally (no Enter).
@@ -191,6 +192,19 @@ TEST(Interactive, TabCompletesFunctionName) {
     ASSERT_TRUE(t.wait_for("> inverse(")) << t.screen();
     t.line("element(multicomplex(1), [2, 0, 0, 0]))");
     EXPECT_TRUE(t.wait_for("%1 = ")) << t.screen();
+}
+
+TEST(Interactive, TabCompletesFileNameInLoad) {
+    REQUIRE_TMUX();
+    temp_home home;
+    std::ofstream(home.path + "/probe_script.symrep") << "70 + 7\n";
+    terminal t(home.path, home.path);
+    ASSERT_TRUE(t.ready()) << t.screen();
+    t.type("load(\"probe_sc");
+    t.key("Tab");
+    ASSERT_TRUE(t.wait_for("> load(\"probe_script.symrep\"")) << t.screen();
+    t.line(")");
+    EXPECT_TRUE(t.wait_for("%1 = 77")) << t.screen();
 }
 
 TEST(Interactive, QuestionMarkShowsHelp) {
