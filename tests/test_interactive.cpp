@@ -99,10 +99,11 @@ struct temp_home {
 /// symrep running in a tmux pane of its own server (unique socket name).
 class terminal {
 public:
-    explicit terminal(const std::string& home, const std::string& cwd = ".") {
+    explicit terminal(const std::string& home, const std::string& cwd = ".",
+                      const std::string& env = "NO_COLOR=1 TERM=xterm") {
         static int counter = 0;
         socket_ = "symrep_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
-        const std::string cmd = "env HOME=" + quote(home) + " NO_COLOR=1 TERM=xterm " + quote(SYMREP_BINARY);
+        const std::string cmd = "env " + env + " HOME=" + quote(home) + " " + quote(SYMREP_BINARY);
         run(tmux() + " new-session -d -s t -x 160 -y 50 -c " + quote(cwd) + " " + quote(cmd));
     }
     ~terminal() { run(tmux() + " kill-server"); }
@@ -115,6 +116,8 @@ public:
         key("Enter");
     }
     std::string screen() { return run(tmux() + " capture-pane -p -J -t t -S -200"); }
+    /// The screen with its colour escapes.
+    std::string screen_escapes() { return run(tmux() + " capture-pane -p -e -J -t t -S -200"); }
     bool alive() { return std::system((tmux() + " has-session -t t >/dev/null 2>&1").c_str()) == 0; }
     /// Polls the screen until `needle` appears `times` times, or the deadline passes.
     bool wait_for(const std::string& needle, int times = 1, double seconds = 6) {
@@ -272,6 +275,20 @@ TEST(Interactive, ErrorsShowFileLineColumn) {
     t.line("[1,");
     t.line("  2 +]");
     EXPECT_TRUE(t.wait_for("<stdin>:2:6: error: syntax error")) << t.screen();
+}
+
+TEST(Interactive, ColourOnlyWhenAllowed) {
+    REQUIRE_TMUX();
+    temp_home home;
+    const std::string red = "\033[31m";
+    for (const char* env : {"TERM=xterm", "NO_COLOR=1 TERM=xterm", "TERM=dumb"}) {
+        terminal t(home.path, ".", std::string("-u NO_COLOR ") + env);
+        ASSERT_TRUE(t.ready()) << t.screen();
+        t.line("nosuchfn(1)");
+        ASSERT_TRUE(t.wait_for("error: unknown function")) << t.screen();
+        const bool coloured = t.screen_escapes().find(red) != std::string::npos;
+        EXPECT_EQ(coloured, std::string(env) == "TERM=xterm") << env;
+    }
 }
 
 #endif  // SYMREP_BINARY
