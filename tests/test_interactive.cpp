@@ -17,6 +17,7 @@
 
 #include "io/interpreter.h"
 #include "io/lexer.h"
+#include "numeric/integrate.h"
 #include "test_util.h"
 
 namespace {
@@ -58,6 +59,24 @@ TEST(Results, LabelsAndErrors) {
     s.run_string("%1 := 3\n", "<t>");
     EXPECT_NE(err.str().find("<t>:1:4: error: syntax error: ':=' assigns to a name only"), std::string::npos)
         << err.str();
+}
+
+// --- the interruption flag (set by Ctrl-C at the prompt) ----------------------------
+
+TEST(Interrupt, EvaluatorAndIntegratorStop) {
+    std::ostringstream out, err;
+    session s(out, err);
+    symrep::lang::interrupt_requested().store(true);
+    s.run_string("1 + 2\n", "<t>");
+    const std::string what = symrep::test::what_of([] {
+        symrep::num::integrate([](double, const double* y, double* d) { d[0] = -y[0]; }, 0.0,
+                               std::vector<double>{1.0}, {1.0});
+    });
+    symrep::lang::interrupt_requested().store(false);
+    EXPECT_EQ(err.str(), "<t>:1:3: error: interrupted\n");
+    EXPECT_EQ(what, "interrupted");
+    s.run_string("1 + 2\n", "<t>");
+    EXPECT_EQ(out.str(), "3\n");
 }
 
 // --- the interactive program in tmux ----------------------------------------------

@@ -675,10 +675,7 @@ void session::exec(const node& stmt, bool echo) {
     }
 }
 
-std::atomic<bool>& interrupt_requested() {
-    static std::atomic<bool> flag{false};
-    return flag;
-}
+std::atomic<bool>& interrupt_requested() { return symrep::interrupt_flag(); }
 
 std::vector<std::string> session::variable_names() const {
     std::vector<std::string> names;

@@ -132,8 +132,10 @@ private:
 /// while it is true, session::eval throws a script_error "interrupted" at the
 /// next syntax node it evaluates, so the statement (and the rest of the input
 /// being run) fails. Whoever sets it clears it before running new input.
-/// A single long operation inside GiNaC/CLN (one huge expand, say) is not
-/// interrupted: the flag is seen when it returns.
+/// The numeric integrator (every right-hand side evaluation) and the rewrite
+/// rules (every step) check it too. A single long operation inside GiNaC/CLN
+/// (one huge expand, say) is not interrupted: the flag is seen when it returns.
+/// The same flag as symrep::interrupt_flag() (io/error.h).
 std::atomic<bool>& interrupt_requested();
 
 /// Names of builtins close to `name` (small edit distance, or starting with it),
