@@ -284,6 +284,24 @@ TEST(Interactive, CtrlCInterruptsComputation) {
     EXPECT_TRUE(t.wait_for("%2 = 3")) << t.screen();
 }
 
+TEST(Interactive, ThirdCtrlCQuitsInsideLibraryCall) {
+    REQUIRE_TMUX();
+    temp_home home;
+    terminal t(home.path);
+    ASSERT_TRUE(t.ready()) << t.screen();
+    // one GiNaC expand of about half a minute: the evaluator cannot stop it
+    t.line("e := expand((a+b+c+d+f+g+h)^40)");
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    t.key("C-c");
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    EXPECT_TRUE(t.alive());
+    EXPECT_EQ(terminal::count(t.screen(), "error: interrupted"), 0) << t.screen();
+    t.key("C-c");
+    ASSERT_TRUE(t.wait_for("press Ctrl-C once more to quit")) << t.screen();
+    t.key("C-c");
+    EXPECT_TRUE(t.wait_exit()) << t.screen();
+}
+
 TEST(Interactive, ErrorsShowFileLineColumn) {
     REQUIRE_TMUX();
     temp_home home;
