@@ -36,6 +36,9 @@ const char* usage_text =
     "Errors are reported on standard error as FILE:LINE:COL: error: MESSAGE; the run\n"
     "continues with the next statement. Exit status 1 if any statement failed.\n";
 
+/// The interactive prompt: repl/interactive.cpp.
+int interactive(symrep::lang::session& s) { return symrep::repl::interactive(s); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -73,7 +76,7 @@ int main(int argc, char** argv) {
     std::ios::sync_with_stdio(true);
     symrep::lang::session s(std::cout, std::cerr);
     if (jobs.empty()) {
-        if (isatty(STDIN_FILENO)) return symrep::repl::interactive(s);
+        if (isatty(STDIN_FILENO)) return interactive(s);
         std::stringstream ss;
         ss << std::cin.rdbuf();
         s.run_string(ss.str(), "<stdin>");
