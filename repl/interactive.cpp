@@ -325,6 +325,10 @@ int interactive(session& s) {
     sigaction(SIGINT, &sa, &old_sa);
 
     rl_readline_name = "symrep";
+    // readline's own SIGINT handler would defer the signal until it reads the
+    // next character, so that the keys typed after Ctrl-C could land on the old
+    // line: only ours is installed, and read_line checks it before every character.
+    rl_catch_signals = 0;
     rl_attempted_completion_function = complete;
     static char breaks[] = " \t\n\"\\'`@$><=;|&{}()[],+-*/^:.";
     rl_basic_word_break_characters = breaks;

@@ -274,12 +274,14 @@ TEST(Interactive, CtrlCInterruptsComputation) {
     ASSERT_TRUE(t.wait_for("<stdin>:1:")) << t.screen();
     EXPECT_TRUE(t.wait_for("error: interrupted")) << t.screen();
     EXPECT_TRUE(t.alive());
-    ASSERT_TRUE(t.wait_for("> ", 3)) << t.screen();  // a new prompt after the error
+    ASSERT_TRUE(t.wait_for("error: interrupted\n>")) << t.screen();  // a new prompt after the error
     t.line("slow + 1");
     EXPECT_TRUE(t.wait_for("%1 = 2")) << t.screen();
     // Ctrl-C at the prompt clears the line
     t.type("this is discarded");
+    ASSERT_TRUE(t.wait_for("> this is discarded")) << t.screen();
     t.key("C-c");
+    ASSERT_TRUE(t.wait_for("> this is discarded\n>")) << t.screen();
     t.line("slow + 2");
     EXPECT_TRUE(t.wait_for("%2 = 3")) << t.screen();
 }
