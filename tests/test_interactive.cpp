@@ -115,17 +115,20 @@ struct temp_home {
     }
 };
 
-/// symrep running in a tmux pane of its own server (unique socket name).
+/// symrep running in a tmux pane of its own server (unique socket file, removed at the end).
 class terminal {
 public:
     explicit terminal(const std::string& home, const std::string& cwd = ".",
                       const std::string& env = "NO_COLOR=1 TERM=xterm") {
         static int counter = 0;
-        socket_ = "symrep_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+        socket_ = ::testing::TempDir() + "/symrep_tmux_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
         const std::string cmd = "env " + env + " HOME=" + quote(home) + " " + quote(SYMREP_BINARY);
         run(tmux() + " new-session -d -s t -x 160 -y 50 -c " + quote(cwd) + " " + quote(cmd));
     }
-    ~terminal() { run(tmux() + " kill-server"); }
+    ~terminal() {
+        run(tmux() + " kill-server");
+        std::remove(socket_.c_str());
+    }
     /// Types `text` literally (no Enter).
     void type(const std::string& text) { run(tmux() + " send-keys -t t -l " + quote(text)); }
     /// Presses keys by tmux name: Enter, Tab, Up, C-c, C-d.
@@ -164,7 +167,7 @@ public:
     }
 
 private:
-    std::string tmux() const { return "tmux -f /dev/null -L " + socket_; }
+    std::string tmux() const { return "tmux -f /dev/null -S " + quote(socket_); }  // a socket of our own
     std::string socket_;
 };
 
