@@ -14,7 +14,7 @@ MAIN_SCRIPT=examples/foucault.symrep
 
 PACKAGES=(g++ make cmake pkg-config
           libginac-dev libcln-dev libeigen3-dev libboost-dev
-          libgtest-dev libgmock-dev libbenchmark-dev libreadline-dev gnuplot-nox)
+          libgtest-dev libgmock-dev libbenchmark-dev libreadline-dev gnuplot-nox tmux)
 
 deps() {
     local missing=()

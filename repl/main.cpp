@@ -15,11 +15,9 @@
 #include <string>
 #include <vector>
 
-#include <readline/history.h>
-#include <readline/readline.h>
-
 #include "io/interpreter.h"
 #include "io/lexer.h"
+#include "interactive.h"
 
 namespace {
 
@@ -44,23 +42,8 @@ const char* usage_text =
     "source line with a caret under the column; the run continues with the next\n"
     "statement (unless --stop-on-error). Exit status 1 if any statement failed.\n";
 
-int interactive(symrep::lang::session& s) {
-    std::cout << "symrep " SYMREP_VERSION " -- help() lists the functions, quit with Ctrl-D\n";
-    std::string pending;
-    for (;;) {
-        char* line = readline(pending.empty() ? "> " : "... ");
-        if (!line) break;
-        std::string l(line);
-        std::free(line);
-        if (!l.empty()) add_history(l.c_str());
-        pending += l + "\n";
-        if (symrep::lang::needs_more_input(pending)) continue;
-        s.run_string(pending, "<stdin>");
-        pending.clear();
-    }
-    std::cout << "\n";
-    return s.failures() ? 1 : 0;
-}
+/// The interactive prompt: repl/interactive.cpp.
+int interactive(symrep::lang::session& s) { return symrep::repl::interactive(s); }
 
 }  // namespace
 

@@ -9,7 +9,7 @@ using namespace symrep::lang;
 namespace {
 std::string sexpr(const node& n) {
     switch (n.kind) {
-        case node::number: case node::ident: case node::boolean: return n.text;
+        case node::number: case node::ident: case node::boolean: case node::result: return n.text;
         case node::string: return "\"" + n.text + "\"";
         case node::unary: return "(" + n.text + " " + sexpr(*n.kids[0]) + ")";
         case node::binary: return "(" + n.text + " " + sexpr(*n.kids[0]) + " " + sexpr(*n.kids[1]) + ")";

@@ -17,6 +17,7 @@ struct node {
         string,    ///< text: the unescaped string
         boolean,   ///< text: "true" / "false"
         ident,     ///< text: the name
+        result,    ///< text: "%", "%%" or "%N" (a previous result, see session::results)
         unary,     ///< text: "-" or "+"; kids[0]
         binary,    ///< text: ^ = == != < > <= >=, x (cross), . (dot); kids[0], kids[1]
         chain,     ///< a run of + - (or * /), left to right: kids[0] op[0] kids[1] op[1] ...;

@@ -7,6 +7,7 @@
 // catch symrep::error (or a subclass) and get the same text from what().
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,19 @@ class error : public std::runtime_error {
 public:
     explicit error(const std::string& msg) : std::runtime_error(msg) {}
 };
+
+/// The interruption request (Ctrl-C at the interactive prompt sets it from a
+/// signal handler). Long loops of the engine call check_interrupt(); the
+/// language evaluator checks it at every syntax node. Whoever sets it clears
+/// it before running new work.
+inline std::atomic<bool>& interrupt_flag() {
+    static std::atomic<bool> flag{false};
+    return flag;
+}
+/// Throws symrep::error("interrupted") while an interruption is requested.
+inline void check_interrupt() {
+    if (interrupt_flag().load(std::memory_order_relaxed)) throw error("interrupted");
+}
 
 /// A position in a script: 1-based line and column.
 struct source_location {

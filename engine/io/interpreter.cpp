@@ -768,8 +768,12 @@ void session::exec(const node& stmt, bool echo) {
     }
     value v = eval(stmt);
     if (!echo || v.is_none()) return;
+    results_.push_back(v);
     switch (opts_.format) {
-        case output_options::text: *out_ << print_value(v, true) << "\n"; break;
+        case output_options::text:
+            if (labels_) *out_ << "%" << results_.size() << " = ";
+            *out_ << print_value(v, true) << "\n";
+            break;
         case output_options::latex: *out_ << latex_value(v) << "\n"; break;
         case output_options::json:
             *out_ << "{\"file\": " << json_quote(files_.empty() ? "<string>" : files_.back())
@@ -779,7 +783,17 @@ void session::exec(const node& stmt, bool echo) {
     }
 }
 
+std::atomic<bool>& interrupt_requested() { return symrep::interrupt_flag(); }
+
+std::vector<std::string> session::variable_names() const {
+    std::vector<std::string> names;
+    for (const auto& [k, v] : vars_) names.push_back(k);
+    return names;
+}
+
 value session::eval(const node& n) {
+    if (interrupt_requested().load(std::memory_order_relaxed))
+        throw script_error("interrupted", {files_.empty() ? "<string>" : files_.back(), n.line, n.column});
     try {
         return eval_inner(n);
     } catch (const script_error&) {
@@ -840,20 +854,27 @@ long index_value(const value& v, std::size_t size) {
 
 }  // namespace
 
+std::vector<std::string> similar_builtin_names(const registry& r, const std::string& name, std::size_t limit) {
+    std::vector<std::pair<std::size_t, std::string>> near;
+    for (const builtin* c : r.all()) {
+        const std::size_t d = edit_distance(name, c->name);
+        const bool prefix = name.size() >= 3 && c->name.rfind(name, 0) == 0;
+        if (d <= std::max<std::size_t>(1, name.size() / 3) || prefix) near.emplace_back(prefix ? 0 : d, c->name);
+    }
+    std::sort(near.begin(), near.end());
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < near.size() && i < limit; ++i) out.push_back(near[i].second);
+    return out;
+}
+
 value session::call(const node& n) {
     const builtin* b = reg_.find(n.text);
     if (!b) {
-        std::vector<std::pair<std::size_t, std::string>> near;
-        for (const builtin* c : reg_.all()) {
-            const std::size_t d = edit_distance(n.text, c->name);
-            const bool prefix = n.text.size() >= 3 && c->name.rfind(n.text, 0) == 0;
-            if (d <= std::max<std::size_t>(1, n.text.size() / 3) || prefix) near.emplace_back(prefix ? 0 : d, c->name);
-        }
-        std::sort(near.begin(), near.end());
+        const std::vector<std::string> near = similar_builtin_names(reg_, n.text);
         std::string msg = "unknown function '" + n.text + "'";
         if (!near.empty()) {
             msg += "; did you mean ";
-            for (std::size_t i = 0; i < near.size() && i < 5; ++i) msg += (i ? ", " : "") + near[i].second;
+            for (std::size_t i = 0; i < near.size(); ++i) msg += (i ? ", " : "") + near[i];
             msg += "?";
         } else {
             msg += " (help() lists all functions)";
@@ -937,6 +958,26 @@ value session::eval_inner(const node& n) {
             if (n.text == "Euler") return ex(GiNaC::Euler);
             if (n.text == "Catalan") return ex(GiNaC::Catalan);
             return ex(symbol(n.text));
+        }
+        case node::result: {
+            const std::size_t count = results_.size();
+            std::size_t k = 0;  // 1-based number of the result asked for
+            if (n.text == "%" || n.text == "%%") {
+                const std::size_t back = n.text == "%" ? 1 : 2;
+                if (count < back)
+                    throw type_error(n.text + " has no value yet: " + n.text +
+                                     (back == 1 ? " is the last printed result" : " is the result before the last") +
+                                     ", and " + (count == 0 ? "none has" : "only one has") + " been printed");
+                k = count + 1 - back;
+            } else {
+                const std::string digits = n.text.substr(1);
+                if (digits.size() > 18 || std::stoull(digits) == 0 || std::stoull(digits) > count)
+                    throw type_error("no result " + n.text + ": " +
+                                     (count == 0 ? std::string("none has been printed yet")
+                                                 : "the results so far are %1.." + std::string("%") + std::to_string(count)));
+                k = std::stoull(digits);
+            }
+            return results_[k - 1];
         }
         case node::unary: {
             value a = eval(*n.kids[0]);

@@ -7,6 +7,7 @@
 // and the run goes on with the next statement. See docs/language.md.
 #pragma once
 
+#include <atomic>
 #include <exception>
 #include <iosfwd>
 #include <map>
@@ -88,6 +89,18 @@ public:
     /// True once a statement failed with options().stop_on_error set.
     bool stopped() const { return stopped_; }
 
+    // --- previous results ------------------------------------------------------
+    /// The values printed by expression statements so far, in order: results()[k-1]
+    /// is %k in the language; % is the last one, %% the one before. Every printed
+    /// value counts (scripts and the interactive prompt alike); assignments,
+    /// declarations and statements without a value do not.
+    const std::vector<value>& results() const { return results_; }
+    /// When on, printed results are labelled with their number: "%3 = x^2"
+    /// (the interactive prompt turns this on).
+    void set_result_labels(bool on) { labels_ = on; }
+    /// Names of the assigned variables (sorted).
+    std::vector<std::string> variable_names() const;
+
     // --- state ---------------------------------------------------------------
     void set(const std::string& name, value v);
     /// The variable's value, or nullptr when unassigned.
@@ -134,8 +147,24 @@ private:
     bool stopped_ = false;
     long digits_at_start_;  ///< GiNaC::Digits, restored by the destructor
     std::map<std::string, std::string> sources_;  ///< script texts by name (for the caret)
+    std::vector<value> results_;  ///< %1, %2, ...
+    bool labels_ = false;
     std::shared_ptr<symrep::rules::rule_set> rules_;  ///< created by rewrite_rules()
 };
+
+/// Set to true (from a SIGINT handler, say) to stop the running evaluation:
+/// while it is true, session::eval throws a script_error "interrupted" at the
+/// next syntax node it evaluates, so the statement (and the rest of the input
+/// being run) fails. Whoever sets it clears it before running new input.
+/// The numeric integrator (every right-hand side evaluation) and the rewrite
+/// rules (every step) check it too. A single long operation inside GiNaC/CLN
+/// (one huge expand, say) is not interrupted: the flag is seen when it returns.
+/// The same flag as symrep::interrupt_flag() (io/error.h).
+std::atomic<bool>& interrupt_requested();
+
+/// Names of builtins close to `name` (small edit distance, or starting with it),
+/// best first, at most `limit`: the "did you mean" suggestions.
+std::vector<std::string> similar_builtin_names(const registry& r, const std::string& name, std::size_t limit = 5);
 
 /// Registers every builtin of the engine (builtins_all.cpp).
 void register_all_builtins(registry& r);

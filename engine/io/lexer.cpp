@@ -111,6 +111,13 @@ std::vector<token> tokenize(const std::string& text) {
         sc.get();
         const char n = sc.peek();
         auto two = [&](const char* t) { sc.get(); push(tok::op, t, l, co); };
+        if (c == '%') {  // %, %%, %N: previous results
+            std::string t = "%";
+            if (n == '%') t += sc.get();
+            else while (digit(sc.peek())) t += sc.get();
+            push(tok::result, t, l, co);
+            continue;
+        }
         if (c == ':' && n == '=') { two(":="); continue; }
         if (c == '=' && n == '=') { two("=="); continue; }
         if (c == '!' && n == '=') { two("!="); continue; }

@@ -17,6 +17,7 @@ enum class tok {
     ident,       ///< names: letters, digits, '_' (not first digit), then primes: r, r', r''
     string,      ///< "..." (unescaped text in `text`)
     op,          ///< + - * / ^ ( ) [ ] , . := = == != < > <= >= (the cross product 'x' is an ident)
+    result,      ///< a previous result: % (the last), %% (the one before), %3 (numbered)
     separator,   ///< newline or ';' outside brackets
     error,       ///< malformed input; message in `text`
     end,         ///< end of input

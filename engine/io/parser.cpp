@@ -27,6 +27,7 @@ std::string describe(const token& t) {
         case tok::number: return "number " + t.text;
         case tok::ident: return "name '" + t.text + "'";
         case tok::string: return "a string";
+        case tok::result: return "'" + t.text + "'";
         case tok::op: return "'" + t.text + "'";
         case tok::separator: return t.text == ";" ? "';'" : "end of line";
         case tok::error: return t.text;
@@ -235,6 +236,7 @@ node_ptr parser::primary() {
     switch (t.kind) {
         case tok::number: get(); return make(node::number, t, t.text);
         case tok::string: get(); return make(node::string, t, t.text);
+        case tok::result: get(); return make(node::result, t, t.text);
         case tok::ident: {
             get();
             if (t.text == "true" || t.text == "false") return make(node::boolean, t, t.text);

@@ -8,7 +8,7 @@
 //   unary      := ('-' | '+') unary | power
 //   power      := postfix [ '^' unary ]            (right associative: a^b^c = a^(b^c))
 //   postfix    := primary { '[' expr ']' }
-//   primary    := NUMBER | STRING | IDENT | IDENT '(' [ expr {',' expr} ] ')'
+//   primary    := NUMBER | STRING | RESULT (% %% %N) | IDENT | IDENT '(' [ expr {',' expr} ] ')'
 //               | '(' expr ')' | '[' [ expr {',' expr} ] ']'
 #pragma once
 

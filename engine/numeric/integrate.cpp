@@ -89,6 +89,7 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
     std::size_t evaluations = 0;
     const std::size_t max_eval = options.max_rhs_evaluations;
     auto system = [&](const state_type& y, state_type& dydt, double t) {
+        check_interrupt();
         if (++evaluations > max_eval)
             throw error("integrate: more than " + std::to_string(max_eval) +
                         " evaluations of the right-hand side (raise max_rhs_evaluations, or the system is stiff)");

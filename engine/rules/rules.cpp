@@ -531,6 +531,7 @@ struct rewriter {
         for (const rule& r : rules) {
             auto found = match_partial(r.lhs, x);
             if (!found) continue;
+            check_interrupt();
             if (res.steps >= max_steps) {
                 res.bound_hit = true;
                 return x;
