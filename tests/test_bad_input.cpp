@@ -208,6 +208,7 @@ TEST(BadInput, GinacMessagesAreTranslated) {
 
 TEST(BadInput, ArticlesInTypeErrors) {
     test::test_session t;
+    EXPECT_EQ(t.val("type(basis(multicomplex(1), 1))").as_string(), "element");
     expect_error<type_error>(t, "element(1, [1])", "must be an algebra, not an expression");
     expect_error<type_error>(t, "algebra_of(multicomplex(1))", "not an algebra");
     expect_error<type_error>(t, "dim(basis(multicomplex(1), 1)) + coords(1)", "not an expression");

@@ -1012,8 +1012,10 @@ struct agree_case {
 
 coeffs idem(const algebra& A, const std::vector<ex>& c) { return A.from_idempotent_components(c); }
 
-void check_agreement(const agree_case& fc, bool with_log) {
+/// Compares the fast and the structure-constant paths; true when no expectation failed.
+bool check_agreement(const agree_case& fc, bool with_log) {
     SCOPED_TRACE(fc.label);
+    const int failed_before = ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
     GiNaC::symbol X("X"), t("t");
     const algebra_ptr slow = structure_algebra::from(*fc.fast);
     for (std::size_t i = 0; i < fc.generic.size(); ++i) {
@@ -1023,7 +1025,8 @@ void check_agreement(const agree_case& fc, bool with_log) {
         EXPECT_TRUE(eq(fc.fast->multiply(a, b), slow->multiply(a, b)));
         EXPECT_TRUE(same(fc.fast->charpoly(a, X), slow->charpoly(a, X)));
         EXPECT_TRUE(same(fc.fast->minpoly(a, X), slow->minpoly(a, X)));
-        ASSERT_FALSE(fc.fast->is_zero_divisor(a));
+        EXPECT_FALSE(fc.fast->is_zero_divisor(a));
+        if (fc.fast->is_zero_divisor(a)) return false;
         EXPECT_TRUE(eq(fc.fast->inverse(a), slow->inverse(a)));
         const coeffs e1 = fc.fast->exp(a, t), e2 = slow->exp(a, t);
         for (const ex& tv : {ex(numeric(1, 3)), ex(numeric(-7, 10)), ex(2)})
@@ -1046,6 +1049,7 @@ void check_agreement(const agree_case& fc, bool with_log) {
             EXPECT_LT(num_diff(e1, e2, {{t, numeric(1, 2)}}), 1e-25);
         }
     }
+    return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() == failed_before;
 }
 
 // An element with positive real part in every idempotent component (has a log) and
@@ -1064,10 +1068,10 @@ TEST(FamilyAgreementExact, Multicomplex3) {
     auto A = multicomplex::make(3);
     const std::vector<ex> rep = {1 + GiNaC::I, 1 - GiNaC::I, 2, 1 + GiNaC::I, 2, 3 * GiNaC::I, 1 + GiNaC::I, -1};
     const std::vector<ex> zd = {0, 1 + GiNaC::I, 2, 0, 2, -GiNaC::I, 1 + GiNaC::I, 3};
-    check_agreement({"multicomplex(3)", A,
+    EXPECT_TRUE(check_agreement({"multicomplex(3)", A,
                      {with_log(*A, 31, false), rationals(16, 32)},
                      {idem(*A, rep), idem(*A, zd), algebra::add(A->unit(), A->imag_unit(0))}},
-                    true);
+                    true));
 }
 
 TEST(FamilyAgreementExact, Sobrero3And4) {
@@ -1087,7 +1091,7 @@ TEST(FamilyAgreementExact, Sobrero3And4) {
         shifted[n] = 2;  // xi_0 + xi_n eps^n: minpoly degree 4
         coeffs real = rationals(A->dim(), 70 + n);
         for (unsigned k = 0; k <= n; ++k) real[n + 1 + k] = 0;  // real coefficients: (X - a_0)^m
-        check_agreement({"sobrero(" + std::to_string(n) + ")", A, {g1, g2}, {nil, nil2, shifted, real}}, true);
+        EXPECT_TRUE(check_agreement({"sobrero(" + std::to_string(n) + ")", A, {g1, g2}, {nil, nil2, shifted, real}}, true));
     }
 }
 
@@ -1101,10 +1105,10 @@ TEST(FamilyAgreementExact, Walsh1And4) {
             zd[p] = p % 4 == 1 ? 0 : int(p % 3) + 1;
         }
         if (N == 2) zd = {0, 3};
-        check_agreement({"walsh(" + std::to_string(n) + ")", A,
+        EXPECT_TRUE(check_agreement({"walsh(" + std::to_string(n) + ")", A,
                          {with_log(*A, 80 + n, true), rationals(N, 90 + n)},
                          {idem(*A, rep), idem(*A, zd), A->idempotent(N - 1)}},
-                        true);
+                        true));
     }
 }
 
@@ -1112,10 +1116,10 @@ TEST(FamilyAgreementExact, WalshComplex3) {
     auto C = WC(3);
     const std::vector<ex> rep = {2 * GiNaC::I, -2 * GiNaC::I, 1, 2 * GiNaC::I, 1, 1, -3, 2 * GiNaC::I};
     const std::vector<ex> zd = {0, GiNaC::I, 1 - GiNaC::I, 0, 2, 2, GiNaC::I, 0};
-    check_agreement({"walsh_complex(3)", C,
+    EXPECT_TRUE(check_agreement({"walsh_complex(3)", C,
                      {with_log(*C, 33, false), rationals(16, 34)},
                      {idem(*C, rep), idem(*C, zd)}},
-                    true);
+                    true));
 }
 
 // =====================================================================================
