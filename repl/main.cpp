@@ -33,6 +33,7 @@ const char* usage_text =
     "                  object per result on stdout, per error on stderr)\n"
     "  --echo          print each statement (\"> \" and its source text) before its result\n"
     "  --stop-on-error stop at the first failed statement (exit status 1)\n"
+    "  --time-limit S  stop a statement that runs longer than S seconds (an error; the run goes on)\n"
     "  --no-caret      error reports without the source line and caret\n"
     "  --doc           print the Markdown reference of all functions and exit\n"
     "  --version       print the version and exit\n"
@@ -79,6 +80,17 @@ int main(int argc, char** argv) {
         }
         if (a == "--stop-on-error") {
             opts.stop_on_error = true;
+            continue;
+        }
+        if (a == "--time-limit") {
+            char* end = nullptr;
+            const double v = i + 1 < argc ? std::strtod(argv[i + 1], &end) : -1;
+            if (i + 1 >= argc || end == argv[i + 1] || *end || !(v > 0) || v > 1e9) {
+                std::cerr << "symrep: --time-limit needs a positive number of seconds\n" << usage_text;
+                return 2;
+            }
+            opts.time_limit = v;
+            ++i;
             continue;
         }
         if (a == "--no-caret") {

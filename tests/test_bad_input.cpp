@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <new>
@@ -213,4 +214,18 @@ TEST(BadInput, ArticlesInTypeErrors) {
     expect_error<type_error>(t, "algebra_of(multicomplex(1))", "not an algebra");
     expect_error<type_error>(t, "dim(basis(multicomplex(1), 1)) + coords(1)", "not an expression");
     expect_error<type_error>(t, "element(multicomplex(0), [1, multicomplex(0)])", "not an algebra");
+}
+
+// A runaway statement is stopped by --time-limit with a message at its place, and
+// the run goes on with the next statement.
+TEST(BadInput, TimeLimitStopsARunawayStatement) {
+    const auto t0 = std::chrono::steady_clock::now();
+    result r = run_cli("--time-limit 0.5 -e 'sum(sum(sum(j*k*l, j, 1, 300), k, 1, 300), l, 1, 300)' -e '7'");
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("<command line>:1:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("time limit"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "7\n");
+    EXPECT_LT(s, 5.0);  // the statement alone takes far longer (about a minute) without the limit
+    EXPECT_EQ(run_cli("--time-limit -1 -e 1").status, 2);
 }

@@ -745,6 +745,7 @@ value session::ode_form(const node& n) {
 }
 
 void session::exec(const node& stmt, bool echo) {
+    statement_start_ = std::chrono::steady_clock::now();
     if (stmt.kind == node::declare) {
         declare(stmt);
         return;
@@ -794,6 +795,12 @@ std::vector<std::string> session::variable_names() const {
 value session::eval(const node& n) {
     if (interrupt_requested().load(std::memory_order_relaxed))
         throw script_error("interrupted", {files_.empty() ? "<string>" : files_.back(), n.line, n.column});
+    if (opts_.time_limit > 0 && (++ticks_ & 63) == 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - statement_start_).count() > opts_.time_limit) {
+        std::ostringstream os;
+        os << "time limit: the statement ran longer than " << opts_.time_limit << " s (--time-limit)";
+        throw script_error(os.str(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column});
+    }
     try {
         return eval_inner(n);
     } catch (const script_error&) {

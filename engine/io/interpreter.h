@@ -8,6 +8,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <iosfwd>
 #include <map>
@@ -51,6 +52,9 @@ struct output_options {
     bool stop_on_error = false;
     /// Follow each text error report with its source line and a caret under the column.
     bool caret = false;
+    /// Seconds a statement may run (0: no limit); checked at every evaluation step
+    /// of the language, so one long library call is not cut short.
+    double time_limit = 0;
 };
 
 class session : public context {
@@ -148,6 +152,8 @@ private:
     long digits_at_start_;  ///< GiNaC::Digits, restored by the destructor
     std::map<std::string, std::string> sources_;  ///< script texts by name (for the caret)
     std::vector<value> results_;  ///< %1, %2, ...
+    std::chrono::steady_clock::time_point statement_start_;  ///< for options().time_limit
+    unsigned ticks_ = 0;
     bool labels_ = false;
     std::shared_ptr<symrep::rules::rule_set> rules_;  ///< created by rewrite_rules()
 };
