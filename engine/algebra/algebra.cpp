@@ -50,6 +50,7 @@ coeffs algebra::power(const coeffs& w, unsigned long k) const {
     coeffs result = unit();
     coeffs base = w;
     while (k > 0) {
+        check_interrupt();
         if (k & 1) result = multiply(result, base);
         k >>= 1;
         if (k > 0) base = multiply(base, base);
@@ -67,8 +68,21 @@ coeffs algebra::evaluate_polynomial(const ex& p, const GiNaC::symbol& X, const c
         throw type_error(os.str());
     }
     const int deg = q.degree(X);
+    if (GiNaC::is_a<GiNaC::add>(q) ? int(q.nops()) * 8 < deg : deg > 8) {
+        // sparse (x^100000 + 1): sum c_k w^k with powers by squaring, not deg Horner steps
+        coeffs acc = zero();
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(q) ? q.nops() : 1); ++i) {
+            const ex term = GiNaC::is_a<GiNaC::add>(q) ? q.op(i) : q;
+            const int k = term.degree(X);
+            const coeffs wk = power(w, static_cast<unsigned long>(k));
+            const ex ck = term.coeff(X, k);
+            for (std::size_t j = 0; j < acc.size(); ++j) acc[j] = tidy(acc[j] + ck * wk[j]);
+        }
+        return acc;
+    }
     coeffs acc = zero();
     for (int k = deg; k >= 0; --k) {  // Horner: acc = acc*w + c_k
+        check_interrupt();
         acc = multiply(acc, w);
         const ex ck = q.coeff(X, k);
         coeffs u = unit();

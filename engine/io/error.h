@@ -8,6 +8,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -29,9 +30,19 @@ inline std::atomic<bool>& interrupt_flag() {
     static std::atomic<bool> flag{false};
     return flag;
 }
-/// Throws symrep::error("interrupted") while an interruption is requested.
+/// The time limit of the running statement: steady_clock ticks since its epoch
+/// (0: none). The language session sets it per statement (--time-limit).
+inline std::atomic<long long>& deadline_ticks() {
+    static std::atomic<long long> ticks{0};
+    return ticks;
+}
+/// Throws symrep::error("interrupted") while an interruption is requested, and
+/// symrep::error("time limit ...") once the statement's deadline has passed.
 inline void check_interrupt() {
     if (interrupt_flag().load(std::memory_order_relaxed)) throw error("interrupted");
+    const long long d = deadline_ticks().load(std::memory_order_relaxed);
+    if (d != 0 && std::chrono::steady_clock::now().time_since_epoch().count() > d)
+        throw error("time limit: the statement ran longer than its time limit (--time-limit)");
 }
 
 /// A position in a script: 1-based line and column.

@@ -746,6 +746,17 @@ value session::ode_form(const node& n) {
 
 void session::exec(const node& stmt, bool echo) {
     statement_start_ = std::chrono::steady_clock::now();
+    // the engine's long loops see the limit through check_interrupt() (io/error.h)
+    struct deadline_guard {
+        long long previous = deadline_ticks().load();  // a load() inside a statement keeps the outer limit
+        explicit deadline_guard(long long d) { if (d) deadline_ticks().store(d); }
+        ~deadline_guard() { deadline_ticks().store(previous); }
+    } guard(opts_.time_limit > 0
+                ? (statement_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                          std::chrono::duration<double>(opts_.time_limit)))
+                      .time_since_epoch()
+                      .count()
+                : 0);
     if (stmt.kind == node::declare) {
         declare(stmt);
         return;
