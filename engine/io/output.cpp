@@ -168,22 +168,6 @@ out_t lx_product(const numeric& c, const std::vector<ex>& factors) {
             l_product};
 }
 
-void split(const ex& t, numeric& c, std::vector<ex>& rest) {
-    c = 1;
-    rest.clear();
-    if (is_a<numeric>(t)) {
-        c = ex_to<numeric>(t);
-        return;
-    }
-    if (is_a<GiNaC::mul>(t)) {
-        for (std::size_t i = 0; i < t.nops(); ++i) {
-            if (is_a<numeric>(t.op(i))) c *= ex_to<numeric>(t.op(i));
-            else rest.push_back(t.op(i));
-        }
-        return;
-    }
-    rest.push_back(t);
-}
 
 out_t lx_sum(const ex& e) {
     std::string s;
@@ -191,7 +175,7 @@ out_t lx_sum(const ex& e) {
     for (const ex& t : canonical_terms(e)) {
         numeric c;
         std::vector<ex> rest;
-        split(t, c, rest);
+        split_coefficient(t, c, rest);
         const bool neg = negative_numeric(c);
         out_t body = lx_product(neg ? numeric(-c) : c, rest);
         const std::string b = body.lvl <= l_sum ? "\\left(" + body.text + "\\right)" : body.text;
@@ -233,7 +217,7 @@ out_t lx(const ex& e) {
     if (is_a<GiNaC::mul>(e)) {
         numeric c;
         std::vector<ex> rest;
-        split(e, c, rest);
+        split_coefficient(e, c, rest);
         if (negative_numeric(c)) return {"-" + lparen(lx_product(-c, rest), l_product), l_sum};
         return lx_product(c, rest);
     }
@@ -432,7 +416,7 @@ out_t py(const ex& e) {
         for (const ex& t : canonical_terms(e)) {
             numeric c;
             std::vector<ex> rest;
-            split(t, c, rest);
+            split_coefficient(t, c, rest);
             const bool neg = negative_numeric(c) && !s.empty();
             const out_t o = py(neg ? ex(-t) : t);
             if (s.empty()) s = o.text;
@@ -443,7 +427,7 @@ out_t py(const ex& e) {
     if (is_a<GiNaC::mul>(e)) {
         numeric c;
         std::vector<ex> rest;
-        split(e, c, rest);
+        split_coefficient(e, c, rest);
         std::vector<std::string> num, den;
         for (const ex& f : rest) {
             if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_real() &&

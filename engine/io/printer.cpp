@@ -419,6 +419,8 @@ std::string print_ex(const ex& e) {
     return pr(e).text;
 }
 
+void split_coefficient(const ex& term, numeric& c, std::vector<ex>& rest) { split_term(term, c, rest); }
+
 std::vector<ex> canonical_terms(const ex& e) {
     if (!is_a<GiNaC::add>(e)) return {e};
     std::vector<ex> out;

@@ -34,6 +34,9 @@ std::string print_value(const value& v, bool quote_strings = true);
 
 /// The terms of a sum in the order print_ex shows them ({e} for a non-sum).
 std::vector<GiNaC::ex> canonical_terms(const GiNaC::ex& e);
+/// A term as its numeric coefficient c and its other factors, every sum factor
+/// with its leading term positive (the sign moved into c), as print_ex shows it.
+void split_coefficient(const GiNaC::ex& term, GiNaC::numeric& c, std::vector<GiNaC::ex>& rest);
 
 // --- other output formats (engine/io/output.cpp) ------------------------------
 /// LaTeX of an expression: sums in the canonical term order, products with their
