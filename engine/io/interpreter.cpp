@@ -740,7 +740,8 @@ value session::ode_form(const node& n) {
     } else {
         build(P.is_vector);
     }
-    (void)mechanics::reduce(P);  // the problem is checked now: errors point at ode(...)
+    // read once, now: errors point at ode(...), and solve() uses the result
+    P.reduced = std::make_shared<const mechanics::operator_form>(mechanics::reduce(P));
     return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
 }
 

@@ -214,7 +214,7 @@ operator_form reduce(const cauchy_problem& P) {
 }
 
 ex solve(const cauchy_problem& P) {
-    const operator_form F = reduce(P);
+    const operator_form F = P.reduced ? *P.reduced : reduce(P);
     const rotation_operator_algebra R(F.Omega);
     const operator_solution S = solve(F.ode, R, P.t);
     std::map<std::string, ex> data(F.data.begin(), F.data.end());

@@ -19,6 +19,7 @@
 // and the initial differences, each exactly 0 for a solution.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@
 
 namespace symrep::mechanics {
 
+struct operator_form;
+
 struct cauchy_problem {
     std::string name;                  ///< the unknown's name, e.g. "r"
     GiNaC::ex t;                       ///< the independent variable (a symbol)
@@ -35,6 +38,8 @@ struct cauchy_problem {
     std::vector<GiNaC::ex> unknowns;   ///< x, x', ..., x^(M) as symbols (vector symbols for a vector x)
     std::vector<GiNaC::ex> initial;    ///< x(0), ..., x^(M-1)(0)
     bool is_vector = true;
+    /// reduce(*this), kept by whoever made the problem so that solve() does not read it again.
+    std::shared_ptr<const operator_form> reduced;
 
     /// M, the order.
     std::size_t order() const { return unknowns.size() - 1; }
