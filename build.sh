@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
 # symrep set-up, build and run. Usage (as root on Debian, from anywhere):
 #   bash build.sh main   install what is missing, build, run the main derivation script
-#   bash build.sh test   install what is missing, build, run every test (ctest)
+#   bash build.sh test   install what is missing, build, run every test (ctest), then the
+#                        robustness test under AddressSanitizer + UBSan (10000 inputs)
 #   bash build.sh deps   only install the Debian packages that are missing
 #   bash build.sh build  deps + build only
-# Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
+#   bash build.sh fuzz [N]  the robustness run under AddressSanitizer + UBSan:
+#                        N random and mutated inputs (default 100000; docs/testing.md)
+# Environment: BUILD_DIR (default: build), ASAN_BUILD_DIR (default: BUILD_DIR-asan),
+# JOBS (default: number of cores).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+ASAN_BUILD_DIR=${ASAN_BUILD_DIR:-$BUILD_DIR-asan}
 MAIN_SCRIPT=examples/foucault.symrep
 
 PACKAGES=(g++ make cmake pkg-config
@@ -37,10 +42,21 @@ build() {
     cmake --build "$BUILD_DIR" -j"$JOBS"
 }
 
+# The robustness test (tests/test_robustness.cpp; docs/testing.md) built with
+# -DSYMREP_SANITIZE=ON, on $1 inputs (default: its own, 10000): a crash, a
+# sanitizer report or a runaway statement fails it.
+sanitized_robustness() {
+    cmake -S . -B "$ASAN_BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSYMREP_SANITIZE=ON -DSYMREP_BUILD_BENCH=OFF >/dev/null
+    cmake --build "$ASAN_BUILD_DIR" -j"$JOBS" --target symrep_robustness
+    SYMREP_FUZZ_LINES=${1:-} "$ASAN_BUILD_DIR"/symrep_robustness
+}
+
 case "${1:-}" in
     deps)  deps ;;
     build) deps; build ;;
     main)  deps; build; "$BUILD_DIR"/symrep "$MAIN_SCRIPT" ;;
-    test)  deps; build; ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS" ;;
-    *) sed -n '2,8p' "$0" >&2; exit 2 ;;
+    test)  deps; build; ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS"
+           sanitized_robustness ;;
+    fuzz)  deps; sanitized_robustness "${2:-100000}" ;;
+    *) sed -n '2,11p' "$0" >&2; exit 2 ;;
 esac

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "io/interpreter.h"
+#include "robustness_findings.h"
 #include "test_support.h"
 
 using namespace symrep;
@@ -229,3 +230,91 @@ TEST(BadInput, TimeLimitStopsARunawayStatement) {
     EXPECT_LT(s, 5.0);  // the statement alone takes far longer (about a minute) without the limit
     EXPECT_EQ(run_cli("--time-limit -1 -e 1").status, 2);
 }
+
+// 0 raised to a complex power: said by symrep (GiNaC's power::eval threw here and
+// lost the power it had allocated: LeakSanitizer, in the robustness run).
+TEST(BadInput, ZeroToComplexPowers) {
+    test::test_session t;
+    expect_error<domain_error>(t, "0^0", "0^0 is undefined");
+    expect_error<domain_error>(t, "0^I", "0^I is undefined (0 raised to an imaginary power)");
+    expect_error<domain_error>(t, "0^(-1+I)", "division by zero: 0 raised to a power with a negative real part");
+    expect_error<domain_error>(t, "0^(-2)", "division by zero: 0 raised to a negative power");
+    EXPECT_TRUE(t.ex("0^(2+I)").is_zero());
+    EXPECT_TRUE(t.ex("0^0.5").is_zero());
+    // substitutions that divide by zero: said before GiNaC evaluates the power
+    expect_error<domain_error>(t, "subs(x/(t - 1) + 1, [t = 1])", "division by zero");
+    expect_error<domain_error>(t, "subs(t^(-1/2), [t = 0])", "division by zero");
+    expect_error<domain_error>(t, "seq(1/k, k, -1, 1)", "division by zero");
+    EXPECT_TRUE(t.ex("subs(t^(-1/2), [t = 4]) - 1/2").is_zero());
+    expect_error<std::exception>(t, "subs(tan(t), [t = pi/2])", "tan: a pole");
+    // floating-point powers beyond the range of the floats of the precision (CLN's message, said)
+    expect_error<std::exception>(t, "1e-3^10^30", "floating-point underflow");
+    expect_error<std::exception>(t, "10.0^(10^19)", "floating-point overflow");
+    expect_error<std::exception>(t, "10^(1.0*10^19)", "floating-point overflow");
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(t.ex("log(10.0^(10^18))/log(10.0)")).to_double(), 1e18, 1e6);
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(t.ex("(1e-3^5)^(-5)")).to_double(), 1e75, 1e60);
+    (void)t.val("old := digits(5)");
+    expect_error<std::exception>(t, "(1e-3^5)^(-5)", "floating-point");  // 5 digits: single floats, to 10^38
+    (void)t.val("digits(old)");
+}
+
+// A matrix plus a number: said by symrep too (GiNaC's add::eval threw and lost the
+// sum); an element compared with a matrix is not equal to it (it was subtracted);
+// a matrix is not ordered, nor an argument of binomial (both subtracted numbers).
+TEST(BadInput, MatrixPlusNumber) {
+    test::test_session t;
+    expect_error<type_error>(t, "matrix([[1, 2], [3, 4]]) + 1", "a matrix cannot be added to a number here");
+    expect_error<type_error>(t, "3/4 - matrix([[1, 2], [3, 4]])", "a matrix cannot be added to a number here");
+    expect_error<type_error>(t, "matrix([[1, 2], [3, 4]]) - (x + 1)", "cannot combine a matrix with x + 1");
+    EXPECT_EQ(t.val("matrix([[1, 2], [3, 4]]) + 0 == matrix([[1, 2], [3, 4]])").as_bool(), true);
+    EXPECT_EQ(t.val("basis(multicomplex(1), 0) == matrix([[1, 2], [3, 4]])").as_bool(), false);
+    expect_error<type_error>(t, "matrix([[1, 2], [3, 4]]) < 1", "cannot compare");
+    expect_error<type_error>(t, "binomial(matrix([[1, 2], [3, 4]]), 3)", "binomial: not defined on a matrix");
+    expect_error<type_error>(t, "atan2(matrix([[1, 2], [3, 4]]), x)", "atan2: not defined on a matrix");
+    expect_error<type_error>(t, "(matrix([[1, 2], [3, 4]]) = 1) - 3/4",
+                             "cannot subtract a relation between matrices (operator '-')");
+    expect_error<std::exception>(t, "expect(0.5 = matrix([[1, 2], [3, 4]]))", "expectation failed");
+    EXPECT_NO_THROW(t.val("expect(matrix([[1, 2], [3, 4]]) = matrix([[1, 2], [3, 4]]))"));
+    EXPECT_EQ(t.val("(matrix([[1]]) = 1) == (matrix([[1]]) = 1)").as_bool(), true);
+    EXPECT_EQ(t.val("(matrix([[1]]) = 1) == (matrix([[1]]) = 2)").as_bool(), false);
+}
+
+// With a time limit, the guards of normal(), expand(), factor(), determinants and
+// diff (algebra/expression_size.h) refuse at once what could not end in time; the
+// first two statements (robustness_findings.h) took 20 s to minutes in one GiNaC
+// call, past any time limit, and so would the third.
+TEST(BadInput, LongGinacCallsAreRefusedWithinTheTimeLimit) {
+    test::test_session t;
+    t.s.options().time_limit = 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (const char* text : {test::sobrero_polynomial_log, test::sobrero_polynomial_factor,
+                             "expand((a + b + c + d + f + g + h + k)^30)"}) {
+        try {
+            (void)t.val(text);
+            ADD_FAILURE() << text << ": no error";
+        } catch (const script_error& e) {
+            EXPECT_NE(std::string(e.what()).find("time limit: "), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("would not end within the statement's time limit"),
+                      std::string::npos) << e.what();
+        }
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LT(s, 5.0);  // refused before the call, not stopped after it
+    t.s.options().time_limit = 0;
+    EXPECT_TRUE(t.ex("expand((a + b)^3) - (a^3 + 3*a^2*b + 3*a*b^2 + b^3)").is_zero());
+}
+
+// Without a time limit, what could not fit in memory is a size error at once.
+TEST(BadInput, ExpansionsHaveASizeLimit) {
+    test::test_session t;
+    expect_error<size_error>(t, "expand((a + b + c + d + f + g + h + k)^100)",
+                             "expand: the expression is too large (an estimated 2.6e+10 terms to multiply out; "
+                             "the limit is 10^8)");
+    expect_error<size_error>(t, "p := (a + b + c + d + f)^2; charpoly(canonical_matrix(element(multicomplex(2), "
+                                "[p, p + 1, p - 1, 2*p, p^2, 1, 2, 3])), X)",
+                             "charpoly: the expression is too large");
+    expect_error<size_error>(t, test::multicomplex_polynomial_minpoly,
+                             "the product of the factors: the expression is too large");
+    EXPECT_EQ(t.val("degree(expand((a + b + c)^20), a)").as_ex(), GiNaC::ex(20));
+}
+

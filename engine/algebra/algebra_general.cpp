@@ -27,13 +27,17 @@ matrix algebra::canonical_matrix(const coeffs& w) const {
 
 // (II.1.21) a_n = det [w].
 ex algebra::determinant(const coeffs& w) const {
-    return tidy(canonical_matrix(w).determinant());
+    const GiNaC::matrix M = canonical_matrix(w);
+    guard_terms(determinant_terms(M, false), "determinant");
+    return tidy(M.determinant());
 }
 
 // (II.1.20) made monic: det(X I - [w]) = (-1)^n det([w] - X I); GiNaC's
 // charpoly(l) is det(M - l I).
 ex algebra::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
-    const ex p = canonical_matrix(w).charpoly(X);
+    const GiNaC::matrix M = canonical_matrix(w);
+    guard_terms(determinant_terms(M, true), "characteristic polynomial");
+    const ex p = M.charpoly(X);
     return GiNaC::expand((dim() % 2 ? -1 : 1) * p);
 }
 
@@ -51,7 +55,7 @@ ex algebra::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
         if (auto rel = K.add(pw)) {  // w^k = sum_{c<k} rel[c] w^c
             ex p = GiNaC::pow(X, static_cast<int>(k));
             for (std::size_t c = 0; c < k; ++c) p -= (*rel)[c] * GiNaC::pow(X, static_cast<int>(c));
-            return GiNaC::expand(p);
+            return guarded_expand(p, "minimal polynomial");
         }
         pw = multiply(pw, w);
     }

@@ -25,6 +25,9 @@ std::string rank_list(const std::vector<std::size_t>& r) {
 // Product of the factors, multiplied pairwise (balanced) and expanded at each level.
 ex expanded_product(std::vector<ex> f) {
     if (f.empty()) return 1;
+    ex all = 1;
+    for (const ex& x : f) all *= x;
+    guard_expansion(all, "the product of the factors", false);
     while (f.size() > 1) {
         std::vector<ex> g;
         for (std::size_t k = 0; k + 1 < f.size(); k += 2) g.push_back(GiNaC::expand(f[k] * f[k + 1]));

@@ -15,6 +15,9 @@
 #include <vector>
 #include <ginac/ginac.h>
 
+#include "algebra/expression_size.h"
+#include "io/error.h"
+
 namespace symrep {
 
 /// Logarithms of products of powers of positive rationals, and such powers,
@@ -174,6 +177,7 @@ inline bool has_symbolic_square_root(const GiNaC::ex& e) {
 /// plain normalization does not decide).
 inline bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
+    guard_expansion(x, "zero test", true);
     const GiNaC::ex y = expand_rational_logs(x);
     // square roots of expressions first as algebraic symbols: faster than normal(),
     // whose gcds over such atoms are slow, and complete where normal() is not
@@ -184,8 +188,22 @@ inline bool is_zero_scalar(const GiNaC::ex& x) {
     }
     if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild()))) return false;
     const GiNaC::ex z = trig_exponential_form(y);
+    guard_expansion(z, "zero test", true);
     return GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z);
 }
+
+/// e.subs(s) (s: a relation, a list of them, or an exmap), with a division by
+/// zero said before GiNaC evaluates it: GiNaC's power::eval throws for 0^(-k)
+/// and loses the power it allocated. Powers are checked innermost first.
+template <class S>
+GiNaC::ex subs_checked(const GiNaC::ex& e, const S& s) {
+    for (auto it = e.postorder_begin(); it != e.postorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+            !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).real().is_positive() && it->op(0).subs(s).is_zero())
+            throw domain_error("division by zero");
+    return e.subs(s);
+}
+
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
 
@@ -230,8 +248,11 @@ inline GiNaC::ex normalize_trig_signs(const GiNaC::ex& e) {
 /// expanded, so that they stay sums of exponentials and trigonometric terms instead
 /// of becoming one fraction over exp(...). Identity for doubles.
 inline GiNaC::ex tidy(const GiNaC::ex& x) {
+    guard_expansion(x, "simplification", false);
     const GiNaC::ex e = GiNaC::expand(x);
-    return has_function_call(e) ? GiNaC::expand(normalize_trig_signs(e)) : GiNaC::normal(e);
+    if (has_function_call(e)) return GiNaC::expand(normalize_trig_signs(e));
+    guard_expansion(e, "simplification", true);
+    return GiNaC::normal(e);
 }
 inline double tidy(double x) { return x; }
 

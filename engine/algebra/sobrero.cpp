@@ -80,7 +80,7 @@ ex sobrero::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "characteristic polynomial");
     const std::size_t m = n_ + 1;
     const ex a0 = w[0], b0 = w[m];
-    return GiNaC::expand(GiNaC::pow(X * X - 2 * a0 * X + a0 * a0 + b0 * b0, int(m)));
+    return guarded_expand(GiNaC::pow(X * X - 2 * a0 * X + a0 * a0 + b0 * b0, int(m)), "characteristic polynomial");
 }
 
 // Minimal polynomial: w = xi_0 + N with N^{m} = 0 != N^{m-1}, m = 1 + floor(n/k_0);
@@ -95,7 +95,7 @@ ex sobrero::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     const int index = k0 == 0 ? 1 : int(n_ / k0) + 1;
     const ex a0 = w[0], b0 = w[m];
     const ex factor = is_zero_scalar(b0) ? ex(X - a0) : ex(X * X - 2 * a0 * X + a0 * a0 + b0 * b0);
-    return GiNaC::expand(GiNaC::pow(factor, index));
+    return guarded_expand(GiNaC::pow(factor, index), "minimal polynomial");
 }
 
 // (III.2.13) w is a zero divisor iff a_0 = b_0 = 0.

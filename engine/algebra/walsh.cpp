@@ -114,7 +114,7 @@ ex walsh::determinant(const coeffs& w) const {
 ex walsh::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
     const std::vector<ex> a = idempotent_components(w);
     ex p = 1;
-    for (const auto& x : a) p = GiNaC::expand(p * (X - x));
+    for (const auto& x : a) p = guarded_expand(p * (X - x), "characteristic polynomial");
     return p;
 }
 
@@ -129,7 +129,7 @@ ex walsh::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
         if (!seen) roots.push_back(x);
     }
     ex p = 1;
-    for (const auto& r : roots) p = GiNaC::expand(p * (X - r));
+    for (const auto& r : roots) p = guarded_expand(p * (X - r), "minimal polynomial");
     return p;
 }
 

@@ -133,7 +133,7 @@ ex walsh_complex::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "characteristic polynomial");
     ex p = 1;
     for (const auto& z : wm::complex_components(w))
-        p = GiNaC::expand(p * (X * X - 2 * z.re * X + z.norm2()));
+        p = guarded_expand(p * (X * X - 2 * z.re * X + z.norm2()), "characteristic polynomial");
     return p;
 }
 
@@ -149,7 +149,7 @@ ex walsh_complex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
         if (!seen) factors.push_back(f);
     }
     ex p = 1;
-    for (const auto& f : factors) p = GiNaC::expand(p * f);
+    for (const auto& f : factors) p = guarded_expand(p * f, "minimal polynomial");
     return p;
 }
 

@@ -76,6 +76,8 @@ long arg_int(const std::vector<value>& args, std::size_t i, const builtin& b, lo
 const GiNaC::symbol& arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b);
 /// A list of expressions (each entry must be an expression).
 std::vector<GiNaC::ex> arg_ex_list(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// True when e is or holds a matrix.
+bool has_matrix(const GiNaC::ex& e);
 
 // --- registration, one function per part of the engine ---------------------------
 void register_core_builtins(registry& r);         // io/builtins_core.cpp: print, subs, diff, expand, ...

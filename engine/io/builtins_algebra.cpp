@@ -84,6 +84,7 @@ void register_algebra_builtins(registry& r) {
             if (a[0].is_element()) return a[0].as_element().inverse();
             (void)arg_ex(a, 0, b);
             const GiNaC::matrix m = as_matrix(a[0], b);
+            guard_terms(determinant_terms(m, false), "inverse");
             if (is_zero_scalar(m.determinant())) throw domain_error(b.name + ": the matrix is singular");
             return ex(m.inverse());
         });
@@ -94,6 +95,7 @@ void register_algebra_builtins(registry& r) {
             const GiNaC::symbol& X = arg_symbol(a, 1, b);
             if (a[0].is_element()) return a[0].as_element().charpoly(X);
             const GiNaC::matrix m = as_matrix(arg_ex(a, 0, b), b);
+            guard_terms(determinant_terms(m, true), "charpoly");
             return GiNaC::expand((m.rows() % 2 ? -1 : 1) * m.charpoly(X));
         });
     add(r, "minpoly", "minpoly(w, X)", "The monic minimal polynomial of w in the symbol X.", "(Cor. II.1.1)",

@@ -10,20 +10,22 @@
 
 #include "algebra/scalar.h"
 #include "io/builtins.h"
+#include "io/interpreter.h"
 
 namespace symrep::lang {
 
 namespace {
 
 // True when v asserts something that holds: a boolean true, or a relation
-// lhs = rhs whose difference normalizes to 0.
+// lhs = rhs whose sides are equal as by == (values_equal: their difference
+// normalizes to 0; matrices entry by entry, vectors by components).
 bool holds(const value& v, const builtin& b) {
     if (v.is_bool()) return v.as_bool();
     if (v.is_ex() && GiNaC::is_a<GiNaC::relational>(v.as_ex())) {
         const GiNaC::ex& r = v.as_ex();
         if (!GiNaC::ex_to<GiNaC::relational>(r).info(GiNaC::info_flags::relation_equal))
             throw type_error(b.name + ": only equations a = b can be checked, not inequalities");
-        return is_zero_scalar(r.lhs() - r.rhs());
+        return values_equal(value(r.lhs()), value(r.rhs()));
     }
     throw type_error(b.name + ": argument 1 must be a boolean (a == b) or an equation (a = b), not " +
                      v.a_kind());

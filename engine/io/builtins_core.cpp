@@ -32,12 +32,6 @@ void add(registry& r, std::string name, std::string sig, std::string summary, st
                 mn, mx, std::move(fn));
 }
 
-bool has_matrix(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::matrix>(*it)) return true;
-    return false;
-}
-
 /// Applies f to an expression, to each coordinate of an element, and recursively
 /// to the entries of a list.
 template <class F> value map_value(const value& v, const builtin& b, F&& f) {
@@ -156,7 +150,7 @@ value seq_values(const builtin& b, const args_t& a, context&) {
     list out;
     auto at = [&](const ex& kv) {
         GiNaC::lst s{k == kv};
-        return map_value(body, b, [&](const ex& x) { return x.subs(s); });
+        return map_value(body, b, [&](const ex& x) { return subs_checked(x, s); });
     };
     if (a.size() == 3) {
         for (const value& v : arg_list(a, 2, b)) {
@@ -197,34 +191,49 @@ void register_core_builtins(registry& r) {
             const GiNaC::lst s = relations(a[1], b, 1);
             return map_value(a[0], b, [&](const ex& x) {
                 // vectors given by components: [1, 0, 0]*t + [0, 1, 0] becomes one literal
-                const ex y = x.subs(s);
+                const ex y = subs_checked(x, s);
                 return !has_matrix(y) || GiNaC::is_a<GiNaC::matrix>(y) ? y
                                                                                               : y.evalm();
             });
         });
     add(r, "expand", "expand(e)", "Multiplies out products and powers of sums.", "", "expand((x + 1)^3)", 1, 1,
         [](const builtin& b, const args_t& a, context&) {
-            return map_value(a[0], b, [](const ex& x) { return GiNaC::expand(x); });
+            return map_value(a[0], b, [&](const ex& x) {
+                guard_expansion(x, b.name.c_str(), false);
+                return GiNaC::expand(x);
+            });
         });
     add(r, "normal", "normal(e)",
         "Brings a rational expression to the normal form numerator/denominator with common factors cancelled.", "",
         "normal((x^2 - 1)/(x - 1))", 1, 1, [](const builtin& b, const args_t& a, context&) {
-            return map_value(a[0], b, [](const ex& x) { return GiNaC::normal(x); });
+            return map_value(a[0], b, [&](const ex& x) {
+                guard_expansion(x, b.name.c_str(), true);
+                return GiNaC::normal(x);
+            });
         });
     add(r, "simplify", "simplify(e)",
         "Simplifies a rational expression (currently the same as normal after expand).", "",
         "simplify(1/x + 1/y)", 1, 1, [](const builtin& b, const args_t& a, context&) {
-            return map_value(a[0], b, [](const ex& x) { return GiNaC::normal(GiNaC::expand(x)); });
+            return map_value(a[0], b, [&](const ex& x) {
+                guard_expansion(x, b.name.c_str(), true);
+                return GiNaC::normal(GiNaC::expand(x));
+            });
         });
     add(r, "factor", "factor(e)", "Factors a polynomial (or the numerator and denominator of a rational "
         "expression) over the rationals.", "", "factor(x^2 - 1)", 1, 1,
         [](const builtin& b, const args_t& a, context&) {
-            return map_value(a[0], b, [](const ex& x) { return GiNaC::factor(GiNaC::normal(x)); });
+            return map_value(a[0], b, [&](const ex& x) {
+                guard_terms(factor_work(x), b.name.c_str());
+                return GiNaC::factor(GiNaC::normal(x));
+            });
         });
     add(r, "collect", "collect(e, x)", "Collects the terms of a polynomial by powers of x.", "",
         "collect(a*x + b*x + x^2, x)", 2, 2, [](const builtin& b, const args_t& a, context&) {
             const ex x = arg_ex(a, 1, b);
-            return map_value(a[0], b, [&](const ex& e) { return GiNaC::collect(GiNaC::expand(e), x); });
+            return map_value(a[0], b, [&](const ex& e) {
+                guard_expansion(e, b.name.c_str(), false);
+                return GiNaC::collect(GiNaC::expand(e), x);
+            });
         });
     add(r, "diff", "diff(e, x [, n])",
         "The n-th derivative (default 1) of an expression, of each coordinate of an element, or of each entry "
@@ -232,7 +241,10 @@ void register_core_builtins(registry& r) {
         "", "diff(sin(x)*x, x)", 2, 3, [](const builtin& b, const args_t& a, context&) {
             const GiNaC::symbol& x = arg_symbol(a, 1, b);
             const long n = a.size() > 2 ? arg_int(a, 2, b, 0, 1000) : 1;
-            return map_value(a[0], b, [&](const ex& e) { return e.diff(x, static_cast<unsigned>(n)); });
+            return map_value(a[0], b, [&](const ex& e) {
+                guard_terms(expression_nodes(e) * double(n), b.name.c_str());
+                return e.diff(x, static_cast<unsigned>(n));
+            });
         });
     add(r, "series", "series(e, x = a, n)",
         "Truncated power series of e around x = a, with terms up to (x - a)^(n-1) and an Order((x - a)^n) term.",
@@ -354,10 +366,14 @@ void register_core_builtins(registry& r) {
     });
     add(r, "atan2", "atan2(y, x)", "The angle of the point (x, y), in (-pi, pi].", "", "atan2(1, -1)", 2, 2,
         [](const builtin& b, const args_t& a, context&) {
+            no_matrix(b, arg_ex(a, 0, b));
+            no_matrix(b, arg_ex(a, 1, b));
             return value(GiNaC::atan2(arg_ex(a, 0, b), arg_ex(a, 1, b)));
         });
     add(r, "binomial", "binomial(n, k)", "The binomial coefficient n choose k.", "", "binomial(5, 2)", 2, 2,
         [](const builtin& b, const args_t& a, context&) {
+            no_matrix(b, arg_ex(a, 0, b));
+            no_matrix(b, arg_ex(a, 1, b));
             check_combinatorial("binomial", "n =", arg_ex(a, 0, b));
             check_combinatorial("binomial", "k =", arg_ex(a, 1, b));
             return value(GiNaC::binomial(arg_ex(a, 0, b), arg_ex(a, 1, b)));
@@ -396,6 +412,7 @@ void register_core_builtins(registry& r) {
             if (a[0].is_element()) return a[0].as_element().determinant();
             const GiNaC::matrix m = arg_matrix(a, 0, b);
             if (m.rows() != m.cols()) throw type_error(b.name + ": the matrix is not square");
+            guard_terms(determinant_terms(m, false), "det");
             return tidy(m.determinant());
         });
     add(r, "matrix", "matrix([[a, b], [c, d]])", "A matrix from the list of its rows.", "",
@@ -405,7 +422,9 @@ void register_core_builtins(registry& r) {
         1, [](const builtin& b, const args_t& a, context&) { return value(ex(arg_matrix(a, 0, b).transpose())); });
     add(r, "rank", "rank(m)", "The rank of a matrix.", "", "rank(matrix([[1, 2], [2, 4]]))", 1, 1,
         [](const builtin& b, const args_t& a, context&) {
-            return value(ex(static_cast<long>(arg_matrix(a, 0, b).rank())));
+            const GiNaC::matrix m = arg_matrix(a, 0, b);
+            guard_terms(determinant_terms(m, false), "rank");
+            return value(ex(static_cast<long>(m.rank())));
         });
 
     add(r, "length", "length(l)",
@@ -489,6 +508,12 @@ void register_core_builtins(registry& r) {
             if (!f->example.empty()) c.out() << "  Example: " << f->example << "\n";
             return value();
         });
+}
+
+bool has_matrix(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::matrix>(*it)) return true;
+    return false;
 }
 
 }  // namespace symrep::lang

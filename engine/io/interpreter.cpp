@@ -39,11 +39,34 @@ std::string clear_message(const std::string& m) {
          "a matrix cannot be added to a number here (use a multiple of the identity matrix)"},
         {"Not a 32-bit integer", "a number is too large here (it must fit in 32 bits)"},
         {"Not a 64-bit integer", "a number is too large here (it must fit in 64 bits)"},
+        {"tan_eval(): simple pole", "tan: a pole (tan is undefined at pi/2 + k pi)"},
     };
     for (const known& k : table)
         if (m.find(k.raw) != std::string::npos) return k.clear;
     return m;
 }
+
+/// The clock of a statement: sets `start` to now and, for a time limit > 0, the
+/// deadline that the engine's long loops and guards see through check_interrupt()
+/// (io/error.h), until destroyed; a load() inside a statement keeps the outer limit.
+class statement_clock {
+public:
+    statement_clock(double limit, std::chrono::steady_clock::time_point& start)
+        : previous_(deadline_ticks().load()) {
+        start = std::chrono::steady_clock::now();
+        if (limit > 0)
+            deadline_ticks().store((start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                std::chrono::duration<double>(limit)))
+                                       .time_since_epoch()
+                                       .count());
+    }
+    ~statement_clock() { deadline_ticks().store(previous_); }
+    statement_clock(const statement_clock&) = delete;
+    statement_clock& operator=(const statement_clock&) = delete;
+
+private:
+    long long previous_;
+};
 
 /// The message to show for an exception: symrep's own verbatim, others translated.
 std::string message_of(const std::exception& e) {
@@ -130,6 +153,19 @@ long max_numeric_bits(const ex& e) {
 }
 
 ex ex_binary(const std::string& op, const ex& a, const ex& b) {
+    // a relation between matrices (m = 1) takes no arithmetic: GiNaC would apply it to both sides
+    for (const ex* r : {&a, &b})
+        if (is_a<GiNaC::relational>(*r) && has_matrix(*r))
+            throw type_error("cannot " + std::string(verb(op)) + " a relation between matrices (operator '" + op +
+                             "')");
+    if ((op == "+" || op == "-") && is_a<GiNaC::matrix>(a) != is_a<GiNaC::matrix>(b)) {
+        // said here, not by GiNaC: add::eval throws for a matrix plus a number and loses the sum it allocated
+        const ex& other = is_a<GiNaC::matrix>(a) ? b : a;
+        if (is_a<numeric>(other) && !other.is_zero())
+            throw type_error("a matrix cannot be added to a number here (use a multiple of the identity matrix)");
+        if (!other.is_zero())
+            throw type_error("cannot combine a matrix with " + print_ex(other) + " (operator '" + op + "')");
+    }
     if (op == "+") return finish(a + b, a, b, op);
     if (op == "-") return finish(a - b, a, b, op);
     if (op == "*") return finish(a * b, a, b, op);
@@ -138,9 +174,24 @@ ex ex_binary(const std::string& op, const ex& a, const ex& b) {
         return finish(a / b, a, b, op);
     }
     if (op == "^") {
-        if (a.is_zero() && is_a<numeric>(b) && ex_to<numeric>(b).is_real() &&
-            ex_to<numeric>(b).is_negative())
-            throw domain_error("division by zero: 0 raised to a negative power");
+        if (a.is_zero() && is_a<numeric>(b)) {
+            // said here, not by GiNaC: power::eval throws for these and loses the power it allocated
+            const numeric re = ex_to<numeric>(b).real();
+            if (re.is_negative())
+                throw domain_error(ex_to<numeric>(b).is_real()
+                                       ? "division by zero: 0 raised to a negative power"
+                                       : "division by zero: 0 raised to a power with a negative real part");
+            if (re.is_zero())
+                throw domain_error(b.is_zero() ? "0^0 is undefined"
+                                               : "0^" + print_ex(b) + " is undefined (0 raised to an imaginary power)");
+        }
+        if (is_a<numeric>(a) && is_a<numeric>(b) && !a.is_zero() &&
+            (!ex_to<numeric>(a).is_crational() || !ex_to<numeric>(b).is_crational())) {
+            // floating point, computed by CLN here: GiNaC's power::eval would do the same, but when
+            // the result is beyond the range of the floats of the precision (an overflow, an
+            // underflow) it throws and loses the power it allocated
+            return ex(ex_to<numeric>(a).power(ex_to<numeric>(b)));
+        }
         if (is_a<numeric>(a) && is_a<numeric>(b) && ex_to<numeric>(a).is_rational() &&
             ex_to<numeric>(b).is_integer()) {
             // exact powers of numbers: refuse results of more than ~10^7 bits
@@ -248,6 +299,8 @@ bool values_equal(const value& a, const value& b) {
     if (a.is_ex() && b.is_ex()) {
         const ex& x = a.as_ex();
         const ex& y = b.as_ex();
+        if (!is_a<GiNaC::matrix>(x) && !is_a<GiNaC::matrix>(y) && (has_matrix(x) || has_matrix(y)))
+            return x.is_equal(y);  // matrices inside relations and the like: never subtracted from numbers
         if (is_vector_ex(a) || is_vector_ex(b)) return symrep::equal(x, y);  // exact, by components
         if (is_a<GiNaC::matrix>(x) || is_a<GiNaC::matrix>(y)) {
             if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return false;
@@ -273,7 +326,9 @@ bool values_equal(const value& a, const value& b) {
         if (a.as_element().parent().name() != b.as_element().parent().name()) return false;
         return a.as_element() == b.as_element();
     }
-    if (a.is_element() && b.is_ex()) return a.as_element() == element::scalar(a.as_element().parent_ptr(), b.as_ex());
+    if (a.is_element() && b.is_ex())  // never one holding a matrix (an element of matrices cannot be formed)
+        return !has_matrix(b.as_ex()) &&
+               a.as_element() == element::scalar(a.as_element().parent_ptr(), b.as_ex());
     if (a.is_ex() && b.is_element()) return values_equal(b, a);
     if (a.is_list() && b.is_list()) {
         const list& x = a.as_list();
@@ -314,7 +369,7 @@ value binary_op(const std::string& op, const value& a, const value& b) {
         bad_operands(op, a, b);
     }
     if (op == "<" || op == ">" || op == "<=" || op == ">=") {
-        if (!a.is_ex() || !b.is_ex()) bad_operands(op, a, b);
+        if (!a.is_ex() || !b.is_ex() || has_matrix(a.as_ex()) || has_matrix(b.as_ex())) bad_operands(op, a, b);
         numeric x, y;
         if (both_real_numbers(a.as_ex(), b.as_ex(), x, y)) {
             if (op == "<") return x < y;
@@ -593,6 +648,7 @@ value session::evaluate(const std::string& text) {
                 exec(*s, false);
                 last = value();
             } else {
+                const statement_clock clock(opts_.time_limit, statement_start_);
                 last = eval(*s);
             }
         }
@@ -746,18 +802,7 @@ value session::ode_form(const node& n) {
 }
 
 void session::exec(const node& stmt, bool echo) {
-    statement_start_ = std::chrono::steady_clock::now();
-    // the engine's long loops see the limit through check_interrupt() (io/error.h)
-    struct deadline_guard {
-        long long previous = deadline_ticks().load();  // a load() inside a statement keeps the outer limit
-        explicit deadline_guard(long long d) { if (d) deadline_ticks().store(d); }
-        ~deadline_guard() { deadline_ticks().store(previous); }
-    } guard(opts_.time_limit > 0
-                ? (statement_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                          std::chrono::duration<double>(opts_.time_limit)))
-                      .time_since_epoch()
-                      .count()
-                : 0);
+    const statement_clock clock(opts_.time_limit, statement_start_);
     if (stmt.kind == node::declare) {
         declare(stmt);
         return;

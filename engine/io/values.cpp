@@ -44,11 +44,11 @@ data_values read_values(const value& v, const builtin& b, std::size_t argno) {
     for (int pass = 0; pass < 16; ++pass) {
         bool changed = false;
         for (auto& [k, x] : d.scalars) {
-            const ex y = x.subs(d.scalars);
+            const ex y = subs_checked(x, d.scalars);
             if (!y.is_equal(x)) { x = y; changed = true; }
         }
         for (auto& [k, x] : d.vectors) {
-            const ex y = x.subs(d.scalars);
+            const ex y = subs_checked(x, d.scalars);
             if (!y.is_equal(x)) { x = y; changed = true; }
         }
         if (!changed) break;
@@ -60,7 +60,7 @@ data_values read_values(const value& v, const builtin& b, std::size_t argno) {
 // a 3x1 matrix for a vector e.
 ex put_values(const ex& e, const data_values& d) {
     ex c = vector_symbols(e).empty() ? e : subs_components(e, d.vectors);
-    return c.subs(d.scalars);
+    return subs_checked(c, d.scalars);
 }
 
 // Where the values make e singular (w = 0 in sin(|w| t)/|w|), its limit: each
@@ -85,7 +85,7 @@ ex put_values_limit(const ex& e, const data_values& d) {
     const ex c = put_values(e, dl);
     auto lim = [&](const ex& x) {
         const ex s = GiNaC::series_to_poly(GiNaC::normal(x).series(lambda == 0, 1));
-        return s.subs(lambda == 0);
+        return subs_checked(s, lambda == 0);
     };
     if (GiNaC::is_a<GiNaC::matrix>(c)) {
         GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(c);
