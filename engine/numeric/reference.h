@@ -1,0 +1,32 @@
+// symrep/numeric/reference.h -- the exact value of a closed form at double
+// inputs, to extended precision: the reference against which every double
+// evaluation (compiled, stable, integrated) is measured.
+//
+// Each input double is taken as the exact binary rational it denotes (no
+// decimal rounding), substituted into the expressions, and the result is
+// evaluated by GiNaC/CLN with `digits` decimal digits. So the reference is the
+// exact solution for the same binary inputs, the measure the speed-accuracy
+// charts and the stability tests need: it separates the error of an
+// evaluation method from the error of the inputs themselves.
+//
+// Cost: milliseconds per point (CLN software floats); for tests and charts,
+// not for production evaluation.
+#pragma once
+
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace symrep::num {
+
+/// The exact rational value of a double (finite; throws domain_error for inf/nan).
+GiNaC::numeric exact_rational(double x);
+
+/// outputs evaluated at inputs = point (point.size() == inputs.size()) with
+/// `digits` significant decimal digits, rounded to long double at the end.
+/// Throws type_error when a symbol has no value, domain_error for a complex or
+/// non-numeric result. digits: 20 .. 10000.
+std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+                                        const std::vector<double>& point, int digits = 60);
+
+}  // namespace symrep::num
