@@ -1,6 +1,7 @@
 // Tests of numeric/reference.h: exact binary inputs, extended-precision values.
 #include <gtest/gtest.h>
 
+#include <cln/real.h>
 #include <cmath>
 
 #include "io/error.h"
@@ -43,4 +44,21 @@ TEST(Reference, NamesWhatIsWrong) {
     EXPECT_THROW(num::reference_eval({x}, {x}, {1.0, 2.0}), type_error);
     EXPECT_THROW(num::reference_eval({GiNaC::sqrt(x)}, {x}, {-1.0}), domain_error);
     EXPECT_THROW(num::reference_eval({x}, {x}, {1.0}, 5), domain_error);
+}
+
+TEST(Reference, FloatsInTheExpressionAreExact) {
+    // A float read from a script has ~20 digits; CLN computes an operation with
+    // a float to that float's precision only, and GiNaC rounds float * number
+    // at substitution. The reference takes the float's exact binary value, so
+    // a phase 0.38... * t at t = 1e6 is not rounded to 20 digits (which would
+    // move sin by ~1e-14).
+    const GiNaC::symbol t("t");
+    const GiNaC::numeric c("0.3826459335309356114");
+    const auto v = num::reference_eval({GiNaC::sin(c * t)}, {t}, {1e6}, 60);
+    const GiNaC::ex exact_phase = GiNaC::numeric(cln::rational(cln::the<cln::cl_R>(c.to_cl_N()))) * 1000000;
+    const double want = num::evaluate_real(GiNaC::sin(exact_phase), 60).to_double();
+    const double rounded = num::evaluate_real(GiNaC::sin(c * 1000000), 60).to_double();  // the 20-digit phase
+    EXPECT_EQ(static_cast<double>(v[0]), want);
+    EXPECT_GT(std::fabs(rounded - want), 1e-15);  // what the exactness saves
+    EXPECT_EQ(num::exact_floats_of(GiNaC::ex(c)), GiNaC::ex(exact_phase / 1000000));
 }

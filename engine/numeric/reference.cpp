@@ -2,6 +2,7 @@
 #include "numeric/reference.h"
 
 #include <cln/float.h>
+#include <cln/complex.h>
 #include <cln/real.h>
 #include <cmath>
 #include <sstream>
@@ -26,7 +27,45 @@ struct digits_scope {
     digits_scope& operator=(const digits_scope&) = delete;
 };
 
+/// The printed expression, cut for a message.
+std::string bounded(const GiNaC::ex& e) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    return s.size() > 120 ? s.substr(0, 117) + "..." : s;
+}
+
+/// Floating-point numbers inside an expression (e.g. 7.2921e-5 read from a
+/// script, a float of ~20 digits) replaced by the exact rationals they denote.
+/// Without this, CLN would compute every operation involving them to their
+/// own precision only (its float contagion rule), whatever Digits says.
+struct exact_floats : GiNaC::map_function {
+    GiNaC::ex operator()(const GiNaC::ex& e) override {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (n.is_rational()) return e;
+            const cln::cl_N z = n.to_cl_N();
+            const cln::cl_R re = cln::realpart(z), im = cln::imagpart(z);
+            return GiNaC::numeric(cln::complex(cln::rational(re), cln::rational(im)));
+        }
+        return e.map(*this);
+    }
+};
+
 }  // namespace
+
+GiNaC::ex exact_floats_of(const GiNaC::ex& e) {
+    exact_floats f;
+    return f(e);
+}
+
+GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
+    const digits_scope scope(digits);
+    const GiNaC::ex v = exact_floats_of(e).evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+        throw domain_error("reference: not a real number: " + bounded(v));
+    return GiNaC::ex_to<GiNaC::numeric>(v);
+}
 
 std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
                                         const std::vector<double>& point, int digits) {
@@ -36,19 +75,12 @@ std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, c
     if (digits < 20 || digits > 10000) throw domain_error("reference: digits must be in 20 .. 10000");
     GiNaC::exmap at;
     for (std::size_t i = 0; i < inputs.size(); ++i) at[inputs[i]] = exact_rational(point[i]);
-    const digits_scope scope(digits);
     std::vector<long double> out;
     out.reserve(outputs.size());
     for (const GiNaC::ex& e : outputs) {
-        const GiNaC::ex v = e.subs(at, GiNaC::subs_options::no_pattern).evalf();
-        if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
-            std::ostringstream os;
-            os << v;
-            std::string s = os.str();
-            if (s.size() > 120) s = s.substr(0, 117) + "...";
-            throw domain_error("reference: not a real number: " + s);
-        }
-        const cln::cl_R r = cln::the<cln::cl_R>(GiNaC::ex_to<GiNaC::numeric>(v).to_cl_N());
+        // floats made exact before the substitution, which would round float * input at once
+        const GiNaC::numeric v = evaluate_real(exact_floats_of(e).subs(at, GiNaC::subs_options::no_pattern), digits);
+        const cln::cl_R r = cln::the<cln::cl_R>(v.to_cl_N());
         out.push_back(cln::double_approx(r) + static_cast<long double>(
             cln::double_approx(r - cln::rational(cln::cl_DF(cln::double_approx(r))))));
     }

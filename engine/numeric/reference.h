@@ -22,6 +22,15 @@ namespace symrep::num {
 /// The exact rational value of a double (finite; throws domain_error for inf/nan).
 GiNaC::numeric exact_rational(double x);
 
+/// e with every floating-point number in it replaced by the exact rational it
+/// denotes (a float read from a script is a binary number of ~20 digits; CLN
+/// would otherwise compute with no more digits than it has).
+GiNaC::ex exact_floats_of(const GiNaC::ex& e);
+
+/// The real value of a symbol-free expression with `digits` decimal digits
+/// (CLN; floats in e taken as exact); domain_error when it is not a real number.
+GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits);
+
 /// outputs evaluated at inputs = point (point.size() == inputs.size()) with
 /// `digits` significant decimal digits, rounded to long double at the end.
 /// Throws type_error when a symbol has no value, domain_error for a complex or
