@@ -3,8 +3,11 @@
 
 #include <cln/float.h>
 #include <cln/complex.h>
+#include <cln/integer.h>
+#include <cln/rational.h>
 #include <cln/real.h>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "io/error.h"
@@ -52,6 +55,23 @@ struct exact_floats : GiNaC::map_function {
     }
 };
 
+/// r rounded to long double through two doubles (hi + lo); beyond the double
+/// range: +-infinity or 0, as double arithmetic would give.
+long double to_long_double(const cln::cl_R& r) {
+    if (cln::zerop(r)) return 0.0L;
+    static const cln::cl_RA largest = cln::rational(cln::cl_DF(std::numeric_limits<double>::max()));
+    static const cln::cl_RA smallest_normal = cln::recip(cln::expt_pos(cln::cl_I(2), 1022L));
+    static const cln::cl_RA smallest = cln::recip(cln::expt_pos(cln::cl_I(2), 1074L));
+    const cln::cl_R a = cln::abs(r);
+    if (a > largest) return cln::minusp(r) ? -HUGE_VALL : HUGE_VALL;
+    if (a < smallest) return 0.0L;
+    if (a < smallest_normal) return static_cast<long double>(cln::double_approx(cln::rational(r)));
+    const double hi = cln::double_approx(r);
+    const cln::cl_R rest = r - cln::rational(cln::cl_DF(hi));
+    const double lo = cln::abs(rest) < smallest_normal ? 0.0 : cln::double_approx(rest);
+    return static_cast<long double>(hi) + lo;
+}
+
 }  // namespace
 
 GiNaC::ex exact_floats_of(const GiNaC::ex& e) {
@@ -81,8 +101,7 @@ std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, c
         // floats made exact before the substitution, which would round float * input at once
         const GiNaC::numeric v = evaluate_real(exact_floats_of(e).subs(at, GiNaC::subs_options::no_pattern), digits);
         const cln::cl_R r = cln::the<cln::cl_R>(v.to_cl_N());
-        out.push_back(cln::double_approx(r) + static_cast<long double>(
-            cln::double_approx(r - cln::rational(cln::cl_DF(cln::double_approx(r))))));
+        out.push_back(to_long_double(r));
     }
     return out;
 }
