@@ -216,3 +216,37 @@ TEST(StableEvaluator, IeeeSemanticsAndErrors) {
     const num::stable_function p(GiNaC::pow(x, 2) / 4 - 3 * x, {x});
     EXPECT_EQ(p(std::vector<double>{2.0})[0], -5.0);
 }
+
+TEST(StableEvaluator, RemovableSingularitiesHaveTheirLimit) {
+    // |w| = 0 exactly in the rotating-frame solution: the problem without
+    // rotation, r0 + v0 t + g t^2/2 (every floating-point format gives 0/0).
+    const derived d = derive(
+        "positive W\nvector w, g, r0, v0\n"
+        "s := solve(ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0))\n"
+        "subs(s, [w = W*[3/5, 0, 4/5], g = [0, 0, -981/100], r0 = [1, 2, 3], v0 = [0, 1, -1/2]])");
+    const num::stable_function f(d.outputs, {d.find("W"), d.find("t")});
+    const double in[2] = {0.0, 2.0};
+    std::vector<double> v(3);
+    EXPECT_EQ(f.eval(in, v.data()), num::precision_tier::multiprecision);
+    EXPECT_NEAR(v[0], 1.0, 1e-15);
+    EXPECT_NEAR(v[1], 2.0 + 2.0, 1e-15);
+    EXPECT_NEAR(v[2], 3.0 - 1.0 - 9.81 * 2.0, 1e-14);
+    // an exact resonance: (cos(nu t) - cos(w0 t))/(w0^2 - nu^2) at nu = w0 is t sin(w0 t)/(2 w0)
+    const GiNaC::symbol nu("nu"), w0("w0"), t("t");
+    const num::stable_function r((GiNaC::cos(nu * t) - GiNaC::cos(w0 * t)) / (w0 * w0 - nu * nu), {nu, w0, t});
+    const double at[3] = {1.5, 1.5, 4.0};
+    double x;
+    r.eval(at, &x);
+    EXPECT_NEAR(x, 4.0 * std::sin(6.0) / 3.0, 1e-15);
+    // near the resonance the formula cancels; still 1e-14 relative
+    const double near[3] = {1.5 * (1 + 1e-13), 1.5, 4.0};
+    r.eval(near, &x);
+    const auto ref = num::reference_eval({(GiNaC::cos(nu * t) - GiNaC::cos(w0 * t)) / (w0 * w0 - nu * nu)},
+                                         {nu, w0, t}, {near[0], near[1], near[2]}, reference_digits);
+    EXPECT_LE(std::fabs(x - ref[0]) / std::fabs(ref[0]), 1e-14);
+    // a pole stays a pole
+    const num::stable_function p(1 / nu, {nu});
+    const double zero = 0;
+    p.eval(&zero, &x);
+    EXPECT_TRUE(std::isinf(x));
+}

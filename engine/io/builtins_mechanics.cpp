@@ -71,6 +71,19 @@ std::string seconds(double s) {
     return os.str();
 }
 
+/// Where the stable evaluator raised the precision of the closed form (numeric/stable_evaluator.h).
+std::string precision_note(const num::verify_result& v) {
+    const auto& n = v.closed_form_tiers;
+    if (n[1] + n[2] == 0) return "";
+    std::ostringstream os;
+    os << " (";
+    if (n[1]) os << n[1] << " points in binary128";
+    if (n[1] && n[2]) os << ", ";
+    if (n[2]) os << n[2] << " in multiprecision";
+    os << ")";
+    return os.str();
+}
+
 }  // namespace
 
 value solve_problem(const value& p) { return value(mechanics::solve(p.as_problem())); }
@@ -257,7 +270,7 @@ void register_mechanics_builtins(registry& r) {
             c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
                     << " (component " << (dim == 3 ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
                     << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
-                    << "]; closed form " << seconds(v.closed_form_seconds) << ", "
+                    << "]; closed form " << seconds(v.closed_form_seconds) << precision_note(v) << ", "
                     << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("
                     << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
                     << "\n";

@@ -99,7 +99,30 @@ std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, c
     out.reserve(outputs.size());
     for (const GiNaC::ex& e : outputs) {
         // floats made exact before the substitution, which would round float * input at once
-        const GiNaC::numeric v = evaluate_real(exact_floats_of(e).subs(at, GiNaC::subs_options::no_pattern), digits);
+        const GiNaC::ex x = exact_floats_of(e);
+        GiNaC::ex at_point;
+        try {
+            at_point = x.subs(at, GiNaC::subs_options::no_pattern);
+        } catch (const error&) {
+            throw;
+        } catch (const std::exception&) {
+            // 0/0 at the point (w = 0 in 1/|w|^2 terms, a resonance w0 = nu in
+            // 1/(w0^2 - nu^2)): the value of the continuous extension, the limit
+            // along a generic line through the point, inputs -> point + lambda c.
+            const GiNaC::symbol lambda("lambda");
+            GiNaC::exmap line;
+            for (std::size_t i = 0; i < inputs.size(); ++i)
+                line[inputs[i]] = exact_rational(point[i]) + lambda * GiNaC::numeric(int(2 * i + 3), int(i + 2));
+            try {
+                const GiNaC::ex near = x.subs(line, GiNaC::subs_options::no_pattern);
+                at_point = GiNaC::series_to_poly(near.series(lambda == 0, 1)).subs(lambda == 0);
+            } catch (const error&) {
+                throw;
+            } catch (const std::exception& why) {
+                throw domain_error(std::string("reference: no value at this point (") + why.what() + ")");
+            }
+        }
+        const GiNaC::numeric v = evaluate_real(at_point, digits);
         const cln::cl_R r = cln::the<cln::cl_R>(v.to_cl_N());
         out.push_back(to_long_double(r));
     }

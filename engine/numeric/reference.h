@@ -33,6 +33,10 @@ GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits);
 
 /// outputs evaluated at inputs = point (point.size() == inputs.size()) with
 /// `digits` significant decimal digits, rounded to long double at the end.
+/// Where an output is 0/0 at the point (a removable singularity: |w| = 0 in a
+/// rotating-frame solution, an exact resonance), its limit along a line
+/// through the point (the value of its continuous extension) is returned;
+/// a pole gives domain_error.
 /// Throws type_error when a symbol has no value, domain_error for a complex or
 /// non-numeric result. digits: 20 .. 10000.
 std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,

@@ -359,33 +359,32 @@ precision_tier stable_function::eval(const double* in, double* out) const {
     eval_binary128(in, out, b.data());
     std::vector<std::size_t> pending;
     for (std::size_t i = 0; i < m; ++i)
-        if (!accepted(out[i], b[i]) && std::isfinite(out[i])) pending.push_back(i);
+        if (!accepted(out[i], b[i])) pending.push_back(i);  // NaN and inf too: 0/0 may have a limit
     if (pending.empty()) return precision_tier::binary128;
 
     // Tier 3: CLN at the exact binary inputs, doubling the digits until two
     // successive values agree (Ziv). A value that is exactly zero at two
-    // successive precisions of 160 digits or more is taken as zero.
-    std::vector<GiNaC::ex> todo;
-    for (std::size_t i : pending) todo.push_back(outputs_[i]);
+    // successive precisions of 160 digits or more is taken as zero. An output
+    // without a real value (log of a negative number, a pole) keeps binary128's
+    // NaN or infinity.
     const std::vector<double> point(in, in + program_.n_inputs_);
-    std::vector<long double> previous;
-    for (int digits = 40; digits <= options_.max_digits; digits *= 2) {
-        std::vector<long double> now;
-        try {
-            now = reference_eval(todo, inputs_, point, digits);
-        } catch (const domain_error&) {
-            for (std::size_t i : pending) out[i] = std::numeric_limits<double>::quiet_NaN();
-            return precision_tier::multiprecision;
+    for (std::size_t i : pending) {
+        const std::vector<GiNaC::ex> one{outputs_[i]};
+        long double previous = 0;
+        for (int digits = 40; digits <= options_.max_digits; digits *= 2) {
+            long double now;
+            try {
+                now = reference_eval(one, inputs_, point, digits)[0];
+            } catch (const domain_error&) {
+                break;
+            }
+            out[i] = static_cast<double>(now);
+            const bool agree = digits > 40 && (now == 0 ? previous == 0 && digits >= 160
+                                                        : std::fabs(now - previous) <=
+                                                              options_.rel_tol * 0.25L * std::fabs(now));
+            if (agree) break;
+            previous = now;
         }
-        bool agree = !previous.empty();
-        for (std::size_t k = 0; k < now.size() && agree; ++k) {
-            const long double d = std::fabs(now[k] - previous[k]);
-            agree = now[k] == 0 ? (previous[k] == 0 && digits >= 160)
-                                : d <= options_.rel_tol * 0.25L * std::fabs(now[k]);
-        }
-        for (std::size_t k = 0; k < now.size(); ++k) out[pending[k]] = static_cast<double>(now[k]);
-        if (agree) break;
-        previous = std::move(now);
     }
     return precision_tier::multiprecision;
 }

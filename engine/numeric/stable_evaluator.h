@@ -29,8 +29,11 @@
 // precision where w t is small or t long, CLN only in extreme corners
 // (w t < 1e-6 with third-order cancellation). The tier used is reported.
 //
-// NaN and infinity follow IEEE double semantics (log of a negative number is
-// NaN): a value that is NaN or infinite in binary128 is returned as is.
+// Removable singularities are evaluated as limits: at |w| = 0 exactly, where
+// (1 - cos(|w| t))/|w|^2 is 0/0 in every floating-point format, tier 3
+// returns the value of the continuous extension (t^2/2), as the exact
+// solution of the problem with w = 0 has it. Otherwise NaN and infinity follow
+// IEEE double semantics (log of a negative number is NaN, a pole infinite).
 //
 // Thread safety: tiers 1 and 2 are reentrant; tier 3 sets GiNaC::Digits for
 // its duration, so concurrent evaluations that reach it must be serialized.
