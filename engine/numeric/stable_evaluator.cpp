@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "io/error.h"
 #include "numeric/reference.h"
@@ -119,11 +120,13 @@ struct constant_split {
     double bound64;
     __float128 value128;
     __float128 bound128;
+    double lo64;      // exact - double, rounded to double
+    double bound_dd;  // |exact - (double + lo64)|
 };
 
 constant_split split_constant(double c, const GiNaC::ex& source, bool known) {
     const double unknown64 = std::fabs(c) * 0x1p-52;
-    if (!known) return {unknown64, __float128(c), __float128(unknown64)};
+    if (!known) return {unknown64, __float128(c), __float128(unknown64), 0.0, unknown64};
     try {
         const cln::cl_R r = cln::the<cln::cl_R>(evaluate_real(source, 60).to_cl_N());
         const cln::cl_RA c_exact = cln::rational(cln::cl_DF(c));
@@ -135,9 +138,9 @@ constant_split split_constant(double c, const GiNaC::ex& source, bool known) {
             std::fabs(cln::double_approx(r - c_exact - cln::rational(cln::cl_DF(lo)))) * (1 + 1e-12) +
             std::fabs(c) * 1e-55;
         // q = hi + lo needs no rounding when lo is below hi's last bit by < 60 bits
-        return {e64, q, __float128(e128) + arith<__float128>::u * fabsq(q)};
+        return {e64, q, __float128(e128) + arith<__float128>::u * fabsq(q), lo, e128};
     } catch (const std::exception&) {
-        return {unknown64, __float128(c), __float128(unknown64)};
+        return {unknown64, __float128(c), __float128(unknown64), 0.0, unknown64};
     }
 }
 
@@ -152,12 +155,31 @@ stable_function::stable_function(const std::vector<GiNaC::ex>& outputs, const st
     constant_bound64_.resize(n);
     constant128_.resize(n);
     constant_bound128_.resize(n);
+    constant_lo64_.resize(n);
+    constant_bound_dd_.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const constant_split s =
             split_constant(program_.constants_[k], program_.constant_sources_[k], program_.constant_known_[k] != 0);
         constant_bound64_[k] = s.bound64;
         constant128_[k] = s.value128;
         constant_bound128_[k] = s.bound128;
+        constant_lo64_[k] = s.lo64;
+        constant_bound_dd_[k] = s.bound_dd;
+    }
+    // sin/cos/sincos whose argument is (constant * input): error-free phases in binary64
+    const std::size_t n_in = program_.n_inputs_;
+    const auto& code = program_.program_;
+    std::vector<std::size_t> defined_by(program_.n_registers_, code.size());
+    for (std::size_t i = 0; i < code.size(); ++i) defined_by[code[i].dst] = i;
+    phases_.resize(code.size());
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        const instruction& ins = code[i];
+        if (ins.op != opcode::sin && ins.op != opcode::cos && ins.op != opcode::sincos) continue;
+        const std::size_t d = defined_by[ins.a];
+        if (d == code.size() || code[d].op != opcode::mul) continue;
+        std::uint32_t x = code[d].a, c = code[d].b;
+        if (x >= n_in) std::swap(x, c);
+        if (x < n_in && c >= n_in && c < n_in + n) phases_[i] = {c, x, true};
     }
 }
 
@@ -181,7 +203,15 @@ void stable_function::run(const T* constants, const T* constant_bounds, const do
         bound[n_in + k] = constant_bounds[k];
     }
     const T inf = infinity<T>();
-    for (const instruction& ins : program_.program_) {
+    const auto& code = program_.program_;
+    for (std::size_t pc = 0; pc < code.size(); ++pc) {
+        const instruction& ins = code[pc];
+        if constexpr (std::is_same_v<T, double>) {
+            if (phases_[pc].active) {
+                run_phase(ins, phases_[pc], in, value, bound);
+                continue;
+            }
+        }
         const T a = value[ins.a], ea = bound[ins.a];
         const T b = value[ins.b], eb = bound[ins.b];
         T v = 0, e = 0;
@@ -322,6 +352,43 @@ void stable_function::run(const T* constants, const T* constant_bounds, const do
         }
         value[ins.dst] = v;
         bound[ins.dst] = A::finite(e) ? e : inf;
+    }
+}
+
+// sin/cos of c * x with c = hi + lo (a double-double of c's exact value) and
+// x an exact input: p + d = hi x exactly (fma), d += lo x; then
+// sin(p + d) = sin p + d cos p - (d^2/2) sin p ..., cos likewise. The phase
+// error is |x| bound_dd(c) plus the rounding of d; the first-order correction
+// leaves d^2/2.
+void stable_function::run_phase(const instruction& ins, const phase_operands& ph, const double* in, double* value,
+                                double* bound) const {
+    using A = arith<double>;
+    const std::size_t k = ph.constant - program_.n_inputs_;
+    const double x = in[ph.input], hi = program_.constants_[k], lo = constant_lo64_[k];
+    const double p = hi * x;
+    const double d = std::fma(hi, x, -p) + lo * x;
+    const double phase_bound = std::fabs(x) * constant_bound_dd_[k] + A::u * std::fabs(d) * 2 + 0.5 * d * d;
+    const double s = std::sin(p), c = std::cos(p);
+    const double sv = s + d * c, cv = c - d * s;
+    auto b = [&](double v, double deriv) {
+        return min(1.0, deriv + phase_bound) * phase_bound + A::f_err * (std::fabs(s) + std::fabs(c)) +
+               2 * A::u * std::fabs(v);
+    };
+    switch (ins.op) {
+        case opcode::sin:
+            value[ins.dst] = sv;
+            bound[ins.dst] = b(sv, std::fabs(cv));
+            break;
+        case opcode::cos:
+            value[ins.dst] = cv;
+            bound[ins.dst] = b(cv, std::fabs(sv));
+            break;
+        default:  // sincos
+            value[ins.dst] = sv;
+            bound[ins.dst] = b(sv, std::fabs(cv));
+            value[ins.b] = cv;
+            bound[ins.b] = b(cv, std::fabs(sv));
+            break;
     }
 }
 

@@ -15,6 +15,11 @@
 //      the derivative of every function over the error interval, the exact
 //      error of every rounded constant). An output is accepted when its bound
 //      is at most rel_tol times its value.
+//      Phases c * t (c a constant, t an input) inside sin and cos are formed
+//      without rounding error: c as a double-double (its exact value split
+//      in two doubles), the product c_hi t split exactly by fma, and the
+//      sine corrected to first order, sin(p + d) = sin p + d cos p; so
+//      oscillations at long times stay in binary64.
 //   2. binary128: the same program in IEEE quadruple precision (113-bit
 //      significand, libquadmath) with the same bound, constants rounded from
 //      their exact values; phases such as w0 t are then formed with an error
@@ -97,7 +102,18 @@ private:
     std::vector<double> constant_bound64_;     // |exact - double| of each constant (inf if unknown)
     std::vector<__float128> constant128_;      // each constant rounded to binary128 (double if unknown)
     std::vector<__float128> constant_bound128_;
+    // Error-free phases in binary64: for each instruction, if it is sin, cos or
+    // sincos of (constant * input), the registers of both; else {0, 0}.
+    struct phase_operands {
+        std::uint32_t constant = 0, input = 0;
+        bool active = false;
+    };
+    std::vector<phase_operands> phases_;
+    std::vector<double> constant_lo64_;        // exact - double, rounded (the low part of a double-double)
+    std::vector<double> constant_bound_dd_;    // |exact - (double + lo)|
 
+    void run_phase(const instruction& ins, const phase_operands& ph, const double* in, double* value,
+                   double* bound) const;
     template <class T>
     void run(const T* constants, const T* constant_bounds, const double* in, T* value, T* bound) const;
 };
