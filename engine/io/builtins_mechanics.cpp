@@ -18,6 +18,7 @@
 #include "io/values.h"
 #include "mechanics/cauchy_problem.h"
 #include "mechanics/rotation_operator_algebra.h"
+#include "mechanics/scene.h"
 #include "numeric/verify.h"
 #include "vector/vector.h"
 
@@ -88,6 +89,24 @@ std::string precision_note(const num::verify_result& v) {
 
 value solve_problem(const value& p) { return value(mechanics::solve(p.as_problem())); }
 
+namespace {
+
+// [w = [0, 0, W], g = [a, b, 0], ...] as the values of a scene (as for eval)
+mechanics::parameter_values scene_values(const args_t& a, std::size_t i, const builtin& b) {
+    const data_values d = read_values(a[i], b, i);
+    return {d.vectors, d.scalars};
+}
+
+}  // namespace
+
+value solve_scene(const builtin& b, const args_t& a, context& c) {
+    const auto& P = problem_arg(a, 0, b);
+    const mechanics::scene_solution s = mechanics::solve(P, scene_values(a, 1, b));
+    std::istringstream report(s.model.report());
+    for (std::string line; std::getline(report, line);) c.out() << b.name << ": " << line << "\n";
+    return value(s.x);
+}
+
 void register_mechanics_builtins(registry& r) {
     add(r, "cross", "cross(a, b)", "The cross product a x b (same as the operator x).", "",
         "vector a, b\ncross(a, b) + cross(b, a)", 2, 2, [](const builtin& b, const args_t& a, context&) {
@@ -157,12 +176,15 @@ void register_mechanics_builtins(registry& r) {
         [](const builtin& b, const args_t&, context&) -> value {
             throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
         });
-    add(r, "check", "check(P, s)",
+    add(r, "check", "check(P, s [, values])",
         "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "
         "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md); "
-        "otherwise prints what is not 0 and returns false.",
-        "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 2, [](const builtin& b, const args_t& a, context& c) {
-            const auto& P = problem_arg(a, 0, b);
+        "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
+        "values put in: the check of a scene's solution solve(P, values).",
+        "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
+            const auto& P0 = problem_arg(a, 0, b);
+            const mechanics::cauchy_problem P =
+                a.size() == 3 ? mechanics::with_values(P0, scene_values(a, 2, b)) : P0;
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
             const mechanics::solution_check k = mechanics::check(P, s);
             if (!k.residual_zero) c.out() << "check: the residual is " << print_ex(k.residual) << ", not 0\n";
@@ -171,6 +193,17 @@ void register_mechanics_builtins(registry& r) {
                     c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "
                             << print_ex(k.initial_differences[m]) << "\n";
             return value(bool(k));
+        });
+    add(r, "model", "model(P, values)",
+        "The smallest exact model of the scene (P made by ode(...), values as for eval): how each data "
+        "vector relates to the operator K = w x (0, along w, perpendicular to w, general) and the algebra "
+        "R[X]/(m_P) of its local minimal polynomial, the terms that vanish for the values, the scene's "
+        "algebra (the lcm of the m_P), and the method with its reason; the report solve(P, values) prints, "
+        "as a string, without solving.",
+        "(II.1.23-24), (VI.1.12-15)",
+        "vector w, g, r0, v0\nmodel(ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0), [w = [0, 0, 1], g = [0, 0, -10]])",
+        2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
         });
     add(r, "eval", "eval(e, values, t = T)",
         "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
