@@ -83,7 +83,9 @@ TEST(MethodLimits, StiffnessCostsTheIntegratorsNotTheClosedForm) {
             EXPECT_GT(r.rhs_evaluations, 0) << st;
             std::printf("stiffness: %s w0 = %d: difference %.2e, %ld right-hand sides\n", st, w0, r.difference,
                         r.rhs_evaluations);
-            if (previous > 0) EXPECT_GT(r.rhs_evaluations, 5 * previous) << st;
+            if (previous > 0) {
+                EXPECT_GT(r.rhs_evaluations, 5 * previous) << st;
+            }
             previous = r.rhs_evaluations;
         }
     }
