@@ -11,6 +11,7 @@
 #include "io/values.h"
 #include "numeric/reference.h"
 #include "numeric/stable_evaluator.h"
+#include "test_util.h"
 
 using namespace symrep;
 
@@ -93,9 +94,7 @@ TEST(MethodLimits, StiffnessCostsTheIntegratorsNotTheClosedForm) {
     const GiNaC::ex s = S.evaluate("subs(s, [w = [0, 3/5000, 4/5000], w0 = 10000, r0 = [1, 0, 0], v0 = [0, 1/2, 0]])")
                             .as_ex();
     const auto comps = lang::components(s);
-    GiNaC::ex t;
-    for (GiNaC::const_preorder_iterator it = s.preorder_begin(); it != s.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it) && GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == "t") t = *it;
+    const GiNaC::ex t = test::symbol_named(s, "t");
     const num::stable_function f(comps, {t});
     for (double T : {0.5, 20.0, 1e4}) {
         std::vector<double> v(3);
@@ -129,13 +128,7 @@ TEST(MethodLimits, ZeroRotationExactly) {
     // the stable evaluator, with |w| an input that is exactly 0
     const GiNaC::ex s = S.evaluate("positive W\nsubs(s, [w = W*[0, 0, 1], w0 = 3, r0 = [1, 2, 0], v0 = [0, 0, 3]])")
                             .as_ex();
-    GiNaC::ex t, W;
-    for (GiNaC::const_preorder_iterator it = s.preorder_begin(); it != s.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) {
-            const std::string n = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
-            if (n == "t") t = *it;
-            if (n == "W") W = *it;
-        }
+    const GiNaC::ex t = test::symbol_named(s, "t"), W = test::symbol_named(s, "W");
     const num::stable_function f(lang::components(s), {W, t});
     const double in[2] = {0.0, 0.5};
     std::vector<double> v(3);

@@ -12,6 +12,7 @@
 #include "io/values.h"
 #include "numeric/reference.h"
 #include "numeric/stable_evaluator.h"
+#include "test_util.h"
 
 using namespace symrep;
 using GiNaC::ex;
@@ -52,10 +53,9 @@ struct derived {
     ex closed_form;
     std::vector<ex> outputs;
     ex find(const std::string& name) const {
-        for (GiNaC::const_preorder_iterator it = closed_form.preorder_begin(); it != closed_form.preorder_end(); ++it)
-            if (GiNaC::is_a<GiNaC::symbol>(*it) && GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == name) return *it;
-        ADD_FAILURE() << "no symbol " << name;
-        return ex();
+        const ex s = test::symbol_named(closed_form, name);
+        if (s.is_zero()) ADD_FAILURE() << "no symbol " << name;
+        return s;
     }
 };
 

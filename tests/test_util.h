@@ -11,9 +11,17 @@
 #include <sstream>
 #include <string>
 
+#include <ginac/ginac.h>
 #include <gtest/gtest.h>
 
 namespace symrep::test {
+
+/// The symbol called `name` inside e (a script's t, W ...), or 0 if there is none.
+inline GiNaC::ex symbol_named(const GiNaC::ex& e, const std::string& name) {
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == name) return *it;
+    return 0;
+}
 
 /// The what() of the exception f throws, or "<no exception>".
 inline std::string what_of(const std::function<void()>& f) {
