@@ -393,7 +393,10 @@ void stable_function::run_phase(const instruction& ins, const phase_operands& ph
 }
 
 void stable_function::eval_binary64(const double* in, double* value, double* bound) const {
-    std::vector<double> r(program_.n_registers_), e(program_.n_registers_);
+    // register files reused per thread (no allocation per evaluation)
+    thread_local std::vector<double> r, e;
+    r.resize(program_.n_registers_);
+    e.resize(program_.n_registers_);
     run<double>(program_.constants_.data(), constant_bound64_.data(), in, r.data(), e.data());
     for (std::size_t i = 0; i < program_.outputs_.size(); ++i) {
         value[i] = r[program_.outputs_[i]];
@@ -402,7 +405,9 @@ void stable_function::eval_binary64(const double* in, double* value, double* bou
 }
 
 void stable_function::eval_binary128(const double* in, double* value, double* bound) const {
-    std::vector<__float128> r(program_.n_registers_), e(program_.n_registers_);
+    thread_local std::vector<__float128> r, e;
+    r.resize(program_.n_registers_);
+    e.resize(program_.n_registers_);
     run<__float128>(constant128_.data(), constant_bound128_.data(), in, r.data(), e.data());
     for (std::size_t i = 0; i < program_.outputs_.size(); ++i) {
         const __float128 v = r[program_.outputs_[i]];
@@ -417,7 +422,8 @@ precision_tier stable_function::eval(const double* in, double* out) const {
     auto accepted = [&](double v, double b) {
         return b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol;
     };
-    std::vector<double> b(m);
+    thread_local std::vector<double> b;
+    b.resize(m);
     eval_binary64(in, out, b.data());
     bool all = true;
     for (std::size_t i = 0; i < m; ++i) all = all && accepted(out[i], b[i]);

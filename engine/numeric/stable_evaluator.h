@@ -56,9 +56,10 @@ namespace symrep::num {
 
 struct stable_options {
     /// Accept an output when its error bound is at most rel_tol * |value|.
-    /// The bound is pessimistic (worst case over all roundings), so the actual
-    /// error is usually well below it.
-    double rel_tol = 4e-15;
+    /// The bound is a worst case over all roundings (actual errors are
+    /// typically 10x smaller), so the default guarantees 1e-14 relative with
+    /// room for the final rounding to double.
+    double rel_tol = 8e-15;
     /// ... or when its error bound is at most abs_tol (0: relative only).
     double abs_tol = 0.0;
     /// Largest CLN precision (decimal digits) tier 3 tries.
