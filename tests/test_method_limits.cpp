@@ -137,3 +137,18 @@ TEST(MethodLimits, ZeroRotationExactly) {
     EXPECT_NEAR(v[1], 2 * std::cos(1.5), 1e-15);
     EXPECT_NEAR(v[2], std::sin(1.5), 1e-15);
 }
+
+TEST(MethodLimits, EvalIsAccurateWhereFormulasCancel) {
+    // The language's eval puts values in exactly and evaluates with controlled
+    // precision: a fixed 20-digit evalf gives 0 for (1 - cos(w t))/w^2 at
+    // w t = 1e-12 and 8 digits for sin(sqrt(2) t) at t = 1e12.
+    std::ostringstream out, err;
+    lang::session S(out, err);
+    auto num = [&](const std::string& s) { return GiNaC::ex_to<GiNaC::numeric>(S.evaluate(s).as_ex()).to_double(); };
+    EXPECT_EQ(num("eval((1 - cos(w*t))/w^2, [w = 1e-12], t = 1)"), 0.5);
+    EXPECT_NEAR(num("eval((1 - cos(w*t))/w^2, [w = 1e-5], t = 1)"), 0.5 - 1e-10 / 24, 1e-16);
+    const GiNaC::symbol t("t");
+    const double want = static_cast<double>(
+        num::reference_eval({GiNaC::sin(GiNaC::sqrt(GiNaC::ex(2)) * t)}, {t}, {1e12}, 60)[0]);
+    EXPECT_EQ(num("eval(sin(sqrt(2)*t), [], t = 1e12)"), want);
+}

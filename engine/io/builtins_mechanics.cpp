@@ -19,6 +19,7 @@
 #include "mechanics/cauchy_problem.h"
 #include "mechanics/rotation_operator_algebra.h"
 #include "mechanics/scene.h"
+#include "numeric/reference.h"
 #include "numeric/verify.h"
 #include "vector/vector.h"
 
@@ -210,11 +211,15 @@ void register_mechanics_builtins(registry& r) {
         "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
         "number or a list of numbers. Returns a number or a list of components (a list of those for "
         "several times). Where the values make the closed form singular (w = 0 in sin(|w| t)/|w|), "
-        "the exact limit is taken.",
+        "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
+        "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
+        "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases).",
         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const ex& e = arg_ex(a, 0, b);
-            data_values d = read_values(a[1], b, 1);
+            // floats taken as the exact numbers they are, so that nothing is rounded before
+            // to_double's precision-controlled evaluation (cancellation, long phases)
+            const ex e = num::exact_floats_of(arg_ex(a, 0, b));
+            const data_values d = exact_values(read_values(a[1], b, 1));
             std::vector<ex> times;
             ex tsym;
             if (a.size() == 3) {
@@ -224,9 +229,9 @@ void register_mechanics_builtins(registry& r) {
                 tsym = tr.lhs();
                 const ex T = tr.rhs();
                 if (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T))  // t = [T1, T2, ...]
-                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(T.op(i));
+                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::exact_floats_of(T.op(i)));
                 else
-                    times.push_back(T);
+                    times.push_back(num::exact_floats_of(T));
             }
             if (a.size() == 3 && a[2].is_ex() && times.empty())
                 throw type_error(b.name + ": no time given");

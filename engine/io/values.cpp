@@ -2,6 +2,8 @@
 // builtins_mechanics.cpp, shared by eval, verify, plot, trajectory and hodograph.
 #include "io/values.h"
 
+#include "numeric/reference.h"
+
 #include "algebra/scalar.h"
 #include "io/printer.h"
 #include "vector/vector.h"
@@ -102,12 +104,26 @@ std::vector<ex> components(const ex& c) {
     return out;
 }
 
+data_values exact_values(data_values d) {
+    for (auto& [k, x] : d.vectors) x = num::exact_floats_of(x);
+    for (auto& [k, x] : d.scalars) x = num::exact_floats_of(x);
+    return d;
+}
+
 double to_double(const ex& x, const builtin& b, const std::string& what) {
     const ex y = GiNaC::evalf(x);
     if (!GiNaC::is_a<GiNaC::numeric>(y) || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
         throw type_error(b.name + ": " + what + " does not evaluate to a real number: " + message_text(y) +
                          " (give every symbol a value)");
-    return GiNaC::ex_to<GiNaC::numeric>(y).to_double();
+    // evalf above only decides that x is a real number; its digits may be
+    // wrong where x cancels or has a long phase, so the value comes from the
+    // precision-controlled evaluation (numeric/reference.h).
+    if (GiNaC::is_a<GiNaC::numeric>(x)) return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+    try {
+        return num::accurate_double(x);
+    } catch (const domain_error&) {
+        return GiNaC::ex_to<GiNaC::numeric>(y).to_double();
+    }
 }
 
 }  // namespace symrep::lang

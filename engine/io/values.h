@@ -30,6 +30,10 @@ struct data_values {
 data_values read_values(const value& v, const builtin& b, std::size_t argno);
 /// e with every value put in: vectors by components, then scalars (a 3x1 matrix for a vector e).
 GiNaC::ex put_values(const GiNaC::ex& e, const data_values& d);
+/// d with every floating-point number in its values replaced by the exact
+/// rational it denotes (for evaluation: GiNaC would otherwise round at once,
+/// e.g. 1 - cos(1e-12) to 0 at 20 digits, when the values are put in).
+data_values exact_values(data_values d);
 /// put_values, or where that fails because a value is 0, the exact limit at that value.
 GiNaC::ex put_values_limit(const GiNaC::ex& e, const data_values& d);
 /// The entries of a matrix (row by row), or {c} for a scalar.

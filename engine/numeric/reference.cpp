@@ -6,6 +6,7 @@
 #include <cln/integer.h>
 #include <cln/rational.h>
 #include <cln/real.h>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -85,6 +86,25 @@ GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
         throw domain_error("reference: not a real number: " + bounded(v));
     return GiNaC::ex_to<GiNaC::numeric>(v);
+}
+
+double accurate_double(const GiNaC::ex& e, int max_digits) {
+    const GiNaC::ex x = exact_floats_of(e);
+    cln::cl_R previous = 0;
+    double result = 0;
+    for (int digits = 30; digits <= std::max(30, max_digits); digits *= 2) {
+        const cln::cl_R now = cln::the<cln::cl_R>(evaluate_real(x, digits).to_cl_N());
+        result = static_cast<double>(to_long_double(now));
+        if (digits > 30) {
+            if (cln::zerop(now)) {
+                if (cln::zerop(previous) && digits >= 120) break;
+            } else if (cln::abs(now - previous) <= cln::abs(now) * cln::recip(cln::expt_pos(cln::cl_I(2), 60L))) {
+                break;
+            }
+        }
+        previous = now;
+    }
+    return result;
 }
 
 std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
