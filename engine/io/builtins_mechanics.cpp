@@ -255,7 +255,7 @@ void register_mechanics_builtins(registry& r) {
         [](const builtin& b, const args_t& a, context& c) -> value {
             const auto& P = problem_arg(a, 0, b);
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
-            data_values d = read_values(a[2], b, 2);
+            data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
             const double T = to_double(arg_ex(a, 3, b), b, "the end time T");
             if (!(T > 0) || !std::isfinite(T)) throw type_error(b.name + ": the end time T must be positive");
             const long n = a.size() > 4 ? arg_int(a, 4, b, 2, 10000000) : 200;
