@@ -382,11 +382,14 @@ value binary_op(const std::string& op, const value& a, const value& b) {
 // session
 
 session::session(std::ostream& out, std::ostream& err)
-    : out_(&out), err_(&err), digits_at_start_(GiNaC::Digits) {
+    : out_(&out), err_(&err), digits_at_start_(GiNaC::Digits), notation_at_start_(symrep::vector_notation()) {
     register_all_builtins(reg_);
 }
 session::session() : session(std::cout, std::cerr) {}
-session::~session() { GiNaC::Digits = digits_at_start_; }  // Digits := n is per session
+session::~session() {  // Digits := n and notation(...) are per session
+    GiNaC::Digits = digits_at_start_;
+    symrep::set_vector_notation(notation_at_start_);
+}
 
 GiNaC::ex session::symbol(const std::string& name) {
     auto it = symbols_.find(name);
@@ -1000,6 +1003,13 @@ value session::eval_inner(const node& n) {
         }
         case node::unary: {
             value a = eval(*n.kids[0]);
+            if (n.text == "|") {  // |a|: the norm sqrt(a . a) of a vector, the absolute value of a scalar
+                if (is_triple(a)) return value(norm(as_literal(a)));  // |[3, 4, 12]|
+                if (a.is_ex() && is_vector(a.as_ex())) return value(norm(a.as_ex()));
+                if (a.is_ex() && !is_a<GiNaC::relational>(a.as_ex()) && !is_a<GiNaC::matrix>(a.as_ex()))
+                    return value(GiNaC::abs(a.as_ex()));
+                throw type_error("|...| needs a vector or a scalar expression, not " + article(a));
+            }
             if (n.text == "+") {
                 if (a.is_ex() || a.is_element() || a.is_list()) return a;
                 throw type_error("unary '+' needs a number, expression, element or list, not " + article(a));
