@@ -202,6 +202,18 @@ TEST(Notation, CommandLineOptions) {
     EXPECT_EQ(back.out, "true\n") << back.err;
     EXPECT_NE(run_symrep("--help").out.find("--unicode"), std::string::npos);
 }
+
+// Columns count characters: the echo of a statement and the caret under an
+// error are right after × and ·, which take two bytes each.
+TEST(Notation, EchoAndCaretCountCharacters) {
+    const auto r = symrep::test::run_symrep("--echo -e 'vector a, b; a × b == a x b; 1 + nosuch(a · b)'", nullptr, "",
+                                            true);
+    EXPECT_EQ(r.out,
+              "> vector a, b\n> a × b == a x b\ntrue\n> 1 + nosuch(a · b)\n"
+              "<command line>:1:34: error: unknown function 'nosuch' (help() lists all functions)\n"
+              "    vector a, b; a × b == a x b; 1 + nosuch(a · b)\n"
+              "                                     ^\n");
+}
 #endif
 
 }  // namespace

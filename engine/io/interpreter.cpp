@@ -432,15 +432,21 @@ std::string line_of(const std::string& text, int line) {
     return text.substr(start, end - start);
 }
 
-/// Offset of (line, column) in text (both 1-based), clamped to the text.
+bool utf8_continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+/// Byte offset of (line, column) in text (both 1-based; columns count
+/// characters, as the lexer does: UTF-8 continuation bytes do not), clamped to
+/// the text.
 std::size_t offset_of(const std::string& text, int line, int column) {
-    std::size_t start = 0;
+    std::size_t p = 0;
     for (int l = 1; l < line; ++l) {
-        start = text.find('\n', start);
-        if (start == std::string::npos) return text.size();
-        ++start;
+        p = text.find('\n', p);
+        if (p == std::string::npos) return text.size();
+        ++p;
     }
-    return std::min(text.size(), start + static_cast<std::size_t>(std::max(column, 1) - 1));
+    for (int c = 1; c < column && p < text.size() && text[p] != '\n'; ++c)
+        for (++p; p < text.size() && utf8_continuation(text[p]);) ++p;
+    return p;
 }
 
 std::string trimmed(const std::string& s) {
@@ -492,8 +498,9 @@ void session::report(const source_location& where, const std::string& msg) {
             std::string l = line_of(it->second, where.line);
             if (!l.empty() && l.back() == '\r') l.pop_back();
             if (!l.empty() && where.column >= 1 && static_cast<std::size_t>(where.column) <= l.size() + 1) {
-                std::string pad;
-                for (int i = 0; i + 1 < where.column; ++i) pad += l[static_cast<std::size_t>(i)] == '\t' ? '\t' : ' ';
+                std::string pad;  // one blank per character before the column (tabs kept)
+                for (std::size_t i = 0; i < offset_of(l, 1, where.column); ++i)
+                    if (!utf8_continuation(l[i])) pad += l[i] == '\t' ? '\t' : ' ';
                 *err_ << "    " << l << "\n    " << pad << "^\n";
             }
         }
