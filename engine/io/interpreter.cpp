@@ -42,6 +42,10 @@ std::string clear_message(const std::string& m) {
     };
     for (const known& k : table)
         if (m.find(k.raw) != std::string::npos) return k.clear;
+    // tan_eval(): simple pole, tanh_eval(): ..., the poles GiNaC finds while evaluating
+    const std::size_t pole = m.find("_eval(): simple pole");
+    if (pole != std::string::npos && pole > 0 && m.find_first_of(" :") > pole)
+        return m.substr(0, pole) + ": the argument is a pole (the value is infinite)";
     return m;
 }
 
