@@ -94,12 +94,7 @@ std::string masked(const std::string& out) {
     return r;
 }
 
-std::vector<std::string> lines_of(const std::string& s) {
-    std::vector<std::string> out;
-    std::istringstream in(s);
-    for (std::string l; std::getline(in, l);) out.push_back(l);
-    return out;
-}
+using symrep::test::lines_of;
 
 /// The lines that differ, in order: "- " expected only, "+ " actual only, with
 /// one line of context (a longest common subsequence of the lines).
