@@ -12,7 +12,7 @@
 // * cross(a, b), dot(a, b) and the triple product [a, b, c] are GiNaC functions
 //   (printed by GiNaC as cross(a,b), dot(a,b), triple(a,b,c); use to_string()
 //   for the thesis notation). Their eval rules, run whenever GiNaC builds the
-//   expression, are cheap: zero argument -> 0, linearity over sums, scalar
+//   expression, are cheap: zero argument (0 or [0, 0, 0]) -> 0, linearity over sums, scalar
 //   factors pulled out, cross(a, a) = 0, dot(a, a x b) = 0, a fixed argument
 //   order for two vector symbols (by name: cross(b, a) -> -cross(a, b),
 //   dot(b, a) -> dot(a, b), triple sorted with the permutation sign, 0 on a
