@@ -332,6 +332,14 @@ value binary_op(const std::string& op, const value& a, const value& b) {
         return ex(R(a.as_ex(), b.as_ex(), o));
     }
     // expressions
+    if (a.is_ex() && b.is_ex() && (op == "+" || op == "-") && (is_vector_ex(a) || is_vector_ex(b)) &&
+        (is_a<GiNaC::matrix>(a.as_ex()) || is_a<GiNaC::matrix>(b.as_ex()))) {
+        // w + [1, 2, 3], 2*[0, 0, t] - r0: a vector sum with a literal term, as the
+        // printer writes solutions (matrix arithmetic would refuse the abstract vector)
+        const ex r = op == "+" ? a.as_ex() + b.as_ex() : a.as_ex() - b.as_ex();
+        (void)is_vector(r);  // [1, 2] + w: type_error
+        return r;
+    }
     if (a.is_ex() && b.is_ex()) {
         ex r = ex_binary(op, a.as_ex(), b.as_ex());
         if (is_vector_ex(a) || is_vector_ex(b)) (void)is_vector(r);  // w + 1, w*w, w^2: type_error
