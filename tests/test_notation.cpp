@@ -52,8 +52,8 @@ struct vector_session {
 };
 
 // Expressions whose text has many terms and factors to order: results of
-// solve, rewrite, vector_series, rotation_operator (no triple products: their
-// text [a, b, c] reads back as a list).
+// solve, rewrite, vector_series, rotation_operator, triple products (printed
+// a . (b x c): the thesis's [a, b, c] would read back as a list).
 const std::vector<std::string> corpus = {
     "a x (b x c)",
     "(a . c)*b - (a . b)*c + w x (w x r0)",
@@ -68,6 +68,7 @@ const std::vector<std::string> corpus = {
     // a scene: literals in the terms, t^2*[0, 0, -10]/2 + ...
     "solve(ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0), [w = [0, 0, 1], g = [0, 0, -10]])",
     "w + [1, 2, 3] - 2*t*[0, 0, 1] + r0 x [1, 0, 0]",
+    "triple(a, b, c)^2 - 3*triple(c, b, a)*t + triple(a, b x c, d)",
 };
 
 TEST(Notation, PrinterWritesTheProductsInEitherNotation) {

@@ -79,7 +79,7 @@ bool is_simple(const ex& e) {
         const auto& n = ex_to<GiNaC::numeric>(e);
         return n.is_integer() && !n.is_negative();
     }
-    if (is_norm_sq(e) || is_triple(e)) return true;
+    if (is_norm_sq(e)) return true;
     if (is_a<GiNaC::function>(e)) return !is_cross(e) && !is_dot(e);
     if (is_a<GiNaC::power>(e))
         return !(is_a<GiNaC::numeric>(e.op(1)) && ex_to<GiNaC::numeric>(e.op(1)).is_negative());
@@ -281,7 +281,9 @@ std::string str(const ex& e) {
     if (is_cross(e)) return factor_text(e.op(0)) + cross_sign() + factor_text(e.op(1));
     if (is_norm_sq(e)) return operand_norm(e.op(0)) + "^2";
     if (is_dot(e)) return factor_text(e.op(0)) + dot_sign() + factor_text(e.op(1));
-    if (is_triple(e)) return "[" + str(e.op(0)) + ", " + str(e.op(1)) + ", " + str(e.op(2)) + "]";
+    // [a, b, c] = a . (b x c), printed so that it reads back (a list [a, b, c] would not)
+    if (is_triple(e))
+        return factor_text(e.op(0)) + dot_sign() + "(" + factor_text(e.op(1)) + cross_sign() + factor_text(e.op(2)) + ")";
     if (is_a<GiNaC::function>(e)) {
         std::string s = ex_to<GiNaC::function>(e).get_name() + "(";
         for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + str(e.op(i));
