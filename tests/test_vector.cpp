@@ -228,7 +228,7 @@ TEST_F(Vec, DeterministicText) {
     EXPECT_EQ(to_string(canonical(cross(w, cross(w, r0)))), "-|w|^2*r0 + (r0 . w)*w");
     EXPECT_EQ(to_string(cross(w, cross(w, r0))), "-(w x (r0 x w))");  // r0 < w by name
     EXPECT_EQ(to_string(norm(w) * dot(w, r0)), "(r0 . w)*|w|");
-    EXPECT_EQ(to_string(canonical(triple(c, b, a))), "-a . (b x c)");
+    EXPECT_EQ(to_string(canonical(triple(c, b, a))), "-(a . (b x c))");
     EXPECT_EQ(to_string(canonical(dot(w, r0) / dot(w, w) * w)), "(r0 . w)*w/|w|^2");
 }
 

@@ -80,7 +80,7 @@ bool is_simple(const ex& e) {
         return n.is_integer() && !n.is_negative();
     }
     if (is_norm_sq(e)) return true;
-    if (is_a<GiNaC::function>(e)) return !is_cross(e) && !is_dot(e);
+    if (is_a<GiNaC::function>(e)) return !is_cross(e) && !is_dot(e) && !is_triple(e);
     if (is_a<GiNaC::power>(e))
         return !(is_a<GiNaC::numeric>(e.op(1)) && ex_to<GiNaC::numeric>(e.op(1)).is_negative());
     return false;
@@ -200,7 +200,7 @@ std::string mul_text(const ex& e) {
 
 // A term of a sum: a bare cross or dot product gets parentheses, (a . b) + c.
 std::string term_text(const ex& t) {
-    return (is_cross(t) || (is_dot(t) && !is_norm_sq(t))) ? "(" + str(t) + ")" : str(t);
+    return (is_cross(t) || is_triple(t) || (is_dot(t) && !is_norm_sq(t))) ? "(" + str(t) + ")" : str(t);
 }
 
 // The printed terms of a sum, in the fixed order: vector terms grouped by
@@ -229,7 +229,7 @@ std::vector<std::string> add_terms(const ex& e) {
     for (auto& [k, g] : groups) {
         const ex& c = g.coef;
         if (c.is_zero()) continue;
-        const bool bare_product = is_cross(g.mon) || (is_dot(g.mon) && !is_norm_sq(g.mon));
+        const bool bare_product = is_cross(g.mon) || is_triple(g.mon) || (is_dot(g.mon) && !is_norm_sq(g.mon));
         const std::string vt = is_simple(g.mon) ? g.text : "(" + g.text + ")";
         if (c.is_equal(1)) {
             terms.push_back(bare_product ? "(" + g.text + ")" : g.text);
