@@ -229,3 +229,10 @@ TEST(BadInput, TimeLimitStopsARunawayStatement) {
     EXPECT_LT(s, 5.0);  // the statement alone takes far longer (about a minute) without the limit
     EXPECT_EQ(run_cli("--time-limit -1 -e 1").status, 2);
 }
+
+TEST(BadInput, EvalNamesAVectorWithoutValue) {
+    test::test_session t;
+    t.run("vector w, r0\ns := r0 + t*(w x r0)");
+    expect_error<type_error>(t, "eval(s, [w = [0, 0, 1]], t = 2)",
+                             "eval: no value given for the vector r0 (give it as r0 = [x, y, z])");
+}

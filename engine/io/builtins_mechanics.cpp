@@ -235,14 +235,20 @@ void register_mechanics_builtins(registry& r) {
             }
             if (a.size() == 3 && a[2].is_ex() && times.empty())
                 throw type_error(b.name + ": no time given");
-            if (times.empty()) return numbers(put_values_limit(e, d), b);
-            list out;
-            for (const ex& T : times) {
-                data_values dt = d;
-                dt.scalars[tsym] = T;
-                out.push_back(numbers(put_values_limit(e, dt), b));
+            try {
+                if (times.empty()) return numbers(put_values_limit(e, d), b);
+                list out;
+                for (const ex& T : times) {
+                    data_values dt = d;
+                    dt.scalars[tsym] = T;
+                    out.push_back(numbers(put_values_limit(e, dt), b));
+                }
+                return times.size() == 1 ? out[0] : value(out);
+            } catch (const type_error& x) {
+                const std::string m = x.what();
+                if (m.rfind(b.name + ": ", 0) == 0) throw;
+                throw type_error(b.name + ": " + m);
             }
-            return times.size() == 1 ? out[0] : value(out);
         });
     add(r, "verify", "verify(P, s, values, T [, n [, stepper]])",
         "Compares the closed form s of the problem P with a numerical integration of P itself "

@@ -442,7 +442,7 @@ struct components {
         if (is_vector_symbol(e)) {
             auto it = m.find(e);
             if (it == m.end())
-                throw type_error("subs_components: no components given for the vector " + name_of(e));
+                throw type_error("no value given for the vector " + name_of(e) + " (give it as " + name_of(e) + " = [x, y, z])");
             const ex& v = it->second;
             if (!vector_symbols(v).empty())
                 throw type_error("subs_components: the value for " + name_of(e) +
