@@ -83,7 +83,7 @@ set size 1, 0.055
 unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid; unset logscale; unset arrow; unset label
 set xrange [0:1]; set yrange [0:1]
 set key center center horizontal maxcols 3 samplen 3 font ",12"
-plot NaN w $1 ls 1 t "symrep closed form (compiled)", NaN w $1 ls 2 t "symrep stable (when built)", \\
+plot NaN w $1 ls 1 t "symrep closed form, compiled double program", NaN w $1 ls 2 t "symrep closed form, stable evaluator", \\
      NaN w lp ls 3 t "rk4, $2", NaN w lp ls 4 t "dopri5, $3", \\
      NaN w lp ls 5 t "rkf78, $3", NaN w lp ls 6 t "bulirsch\\\\_stoer, $3"
 GP
@@ -170,7 +170,7 @@ set size 1, 0.1
 unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid; unset logscale
 set xrange [0:1]; set yrange [0:1]
 set key center center horizontal maxcols 6 samplen 3 font ",12"
-plot NaN w lp ls 1 t "symrep closed form (compiled)", NaN w lp ls 2 t "symrep stable (when built)", \
+plot NaN w lp ls 1 t "symrep closed form, compiled double program", NaN w lp ls 2 t "symrep closed form, stable evaluator", \
      NaN w lp ls 3 t "rk4, step 10^{-3} s", NaN w lp ls 4 t "dopri5, tol 10^{-12}", \
      NaN w lp ls 5 t "rkf78, tol 10^{-12}", NaN w lp ls 6 t "bulirsch\\\\_stoer, tol 10^{-12}"
 unset multiplot
@@ -188,11 +188,11 @@ set yrange [1e-17:10]
 set xrange [1:3e6]
 set bmargin 4
 set arrow 1 from 86400, graph 0 to 86400, graph 1 nohead dt 3 lc rgb "#555555"
-set label 1 "1 day" at 86400, graph 0.04 offset 0.5, 0 font ",10"
+set label 1 "1 day" at 86400, 3e-15 offset 0.5, 0 font ",10"
 set key top left box opaque font ",10"
 f = "$out/wp_long_time.csv"
-plot f using (is(2, "symrep compiled") ? \$4 : NaN):(clip(\$5)) w l ls 1 t "symrep closed form (compiled)", \
-     f using (is(2, "symrep stable") ? \$4 : NaN):(clip(\$5)) w l ls 2 t "symrep stable (when built)", \
+plot f using (is(2, "symrep compiled") ? \$4 : NaN):(clip(\$5)) w l ls 1 t "symrep closed form, compiled double program", \
+     f using (is(2, "symrep stable") ? \$4 : NaN):(clip(\$5)) w l ls 2 t "symrep closed form, stable evaluator", \
      f using (is(2, "rk4") ? \$4 : NaN):(clip(\$5)) w l ls 3 t "rk4, step 0.5 s", \
      f using (is(2, "dopri5") ? \$4 : NaN):(clip(\$5)) w l ls 4 t "dopri5, tol 10^{-7}", \
      f using (is(2, "rkf78") && is(3, "1e-10") ? \$4 : NaN):(clip(\$5)) w l ls 5 t "rkf78, tol 10^{-10}", \

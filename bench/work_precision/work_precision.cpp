@@ -26,6 +26,7 @@
 // (--scene: one scene of the work part; bench/work_precision.sh runs everything
 // and draws the charts). Not a test; not run by CI.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -66,26 +67,37 @@ double seconds_since(clock_type::time_point start) {
 // ------------------------------------------------------------ closed-form evaluators
 // The symrep curve is drawn for every evaluator listed here. An adapter turns
 // (outputs, input t) into a function that evaluates n times at once (row k of
-// `out` = the outputs at t[k]).
-using many_points = std::function<void(const double* t, double* out, std::size_t n)>;
+// `out` = the outputs at t[k]) and a note on how it evaluated (for the CSV).
+struct evaluation {
+    std::function<void(const double* t, double* out, std::size_t n)> run;
+    std::function<std::string()> note;
+};
 
 struct closed_form_evaluator {
     const char* method;  ///< the method name in the CSV files and the charts' legends
-    many_points (*make)(const std::vector<ex>& outputs, const ex& t);
+    evaluation (*make)(const std::vector<ex>& outputs, const ex& t);
 };
 
-many_points make_compiled(const std::vector<ex>& outputs, const ex& t) {
+evaluation make_compiled(const std::vector<ex>& outputs, const ex& t) {
     auto f = std::make_shared<const num::compiled_function>(num::compile(outputs, {t}));
-    return [f](const double* in, double* out, std::size_t n) { f->eval_many(in, out, n); };
+    return {[f](const double* in, double* out, std::size_t n) { f->eval_many(in, out, n); },
+            [f] { return std::to_string(f->n_instructions()) + " instructions"; }};
 }
 
 #ifdef SYMREP_WP_HAVE_STABLE
-many_points make_stable(const std::vector<ex>& outputs, const ex& t) {
+evaluation make_stable(const std::vector<ex>& outputs, const ex& t) {
     auto f = std::make_shared<const num::stable_function>(outputs, std::vector<ex>{t});
+    auto tiers = std::make_shared<std::array<std::size_t, 3>>();  // points per tier, last call
     const std::size_t m = f->n_outputs();
-    return [f, m](const double* in, double* out, std::size_t n) {
-        for (std::size_t k = 0; k < n; ++k) f->eval(in + k, out + k * m);
-    };
+    return {[f, m, tiers](const double* in, double* out, std::size_t n) {
+                tiers->fill(0);
+                for (std::size_t k = 0; k < n; ++k) ++(*tiers)[static_cast<std::size_t>(f->eval(in + k, out + k * m))];
+            },
+            [tiers] {
+                const auto& c = *tiers;
+                return "points: " + std::to_string(c[0]) + " binary64 / " + std::to_string(c[1]) + " binary128 / " +
+                       std::to_string(c[2]) + " multiprecision";
+            }};
 }
 #endif
 
@@ -326,13 +338,13 @@ measurement run_closed_form(const settings& s, const closed_form_evaluator& e, c
                             const reference& r) {
     measurement m;
     m.method = e.method;
-    m.parameter = "-";
     const auto start = clock_type::now();
-    const many_points f = e.make(in.closed_form, t);
+    const evaluation f = e.make(in.closed_form, t);
     m.setup_seconds = seconds_since(start);
     const std::size_t n = r.times.size(), dim = in.closed_form.size();
     std::vector<double> y(n * dim);
-    m.cost = median_time(s, [&] { f(r.times.data(), y.data(), n); });
+    m.cost = median_time(s, [&] { f.run(r.times.data(), y.data(), n); });
+    m.parameter = f.note();
     m.error = trajectory_error(r, y.data(), dim);
     return m;
 }
@@ -477,7 +489,7 @@ void omega_sweep(const settings& s) {
             };
             for (const closed_form_evaluator& e : closed_form_evaluators) {
                 double y[3];
-                e.make(in.closed_form, d.problem.t)(&T, y, 1);
+                e.make(in.closed_form, d.problem.t).run(&T, y, 1);
                 row(e.method, y);
             }
             for (num::stepper_kind k : {num::stepper_kind::rk4, num::stepper_kind::dopri5, num::stepper_kind::rkf78,
@@ -530,7 +542,7 @@ void time_sweep(const settings& s) {
     };
     for (const closed_form_evaluator& e : closed_form_evaluators) {
         std::vector<double> y(n * dim);
-        e.make(in.closed_form, d.problem.t)(times.data(), y.data(), n);
+        e.make(in.closed_form, d.problem.t).run(times.data(), y.data(), n);
         rows(e.method, "-", y.data(), dim);
     }
     struct choice {
