@@ -268,51 +268,21 @@ void register_mechanics_builtins(registry& r) {
             num::integration_options opt;
             opt.abs_tol = opt.rel_tol = 1e-12;
             if (a.size() > 5) opt.stepper = num::stepper_from_name(arg_string(a, 5, b));
+            if (opt.stepper == num::stepper_kind::rk4)
+                throw type_error(b.name + ": rk4 has no error control; use rkf78, bulirsch_stoer or dopri5");
             const auto t0 = std::chrono::steady_clock::now();
             // the closed form with the values put in (t stays free)
             const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
             d.scalars.erase(P.t);
             const std::vector<ex> cf = components(put_values_limit(s, d));
             // the first-order system: state x, x', ..., x^(M-1); x^(M) solved from the equation
-            const std::size_t M = P.order(), dim = P.is_vector ? 3 : 1;
-            std::vector<ex> state, rhs, accel;
-            for (std::size_t i = 0; i < M * dim; ++i) state.push_back(GiNaC::symbol("y" + std::to_string(i)));
-            for (std::size_t i = 0; i < dim; ++i) accel.push_back(GiNaC::symbol("a" + std::to_string(i)));
-            ex E;
-            if (P.is_vector) {
-                data_values dv = d;
-                for (std::size_t m = 0; m < M; ++m)
-                    dv.vectors[P.unknowns[m]] = vector_literal(state[3 * m], state[3 * m + 1], state[3 * m + 2]);
-                dv.vectors[P.unknowns[M]] = vector_literal(accel[0], accel[1], accel[2]);
-                E = put_values(P.expression, dv);
-            } else {
-                data_values dv = d;
-                for (std::size_t m = 0; m < M; ++m) dv.scalars[P.unknowns[m]] = state[m];
-                dv.scalars[P.unknowns[M]] = accel[0];
-                E = put_values(P.expression, dv);
-            }
-            GiNaC::lst eqs, unk;
-            for (const ex& x : components(E)) eqs.append(GiNaC::expand(x) == 0);
-            for (const ex& x : accel) unk.append(x);
-            const ex sol = GiNaC::lsolve(eqs, unk);
-            if (sol.nops() != dim)
-                throw domain_error(b.name + ": the equation cannot be solved for " + P.unknown_name(M) +
-                                   " at these values (its leading coefficient is singular)");
-            for (std::size_t i = dim; i < M * dim; ++i) rhs.push_back(state[i]);
-            for (std::size_t i = 0; i < dim; ++i) rhs.push_back(sol.op(i).rhs());
-            // the initial state from P's own data, not from s
-            std::vector<double> y0;
-            for (std::size_t m = 0; m < M; ++m)
-                for (const ex& x : components(put_values_limit(P.is_vector && P.initial[m].is_zero()
-                                                                   ? vector_literal(0, 0, 0)
-                                                                   : P.initial[m],
-                                                               d)))
-                    y0.push_back(to_double(x, b, "the initial value of " + P.unknown_name(m)));
+            const first_order_system sys = first_order(P, d, b);
             const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            const num::verify_result v = num::verify(cf, t, rhs, state, y0, {}, 0.0, T, std::size_t(n), opt);
+            const num::verify_result v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T,
+                                                        std::size_t(n), opt);
             static const char* axes[] = {"x", "y", "z"};
             c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
-                    << " (component " << (dim == 3 ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
+                    << " (component " << (P.is_vector ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
                     << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
                     << "]; closed form " << seconds(v.closed_form_seconds) << precision_note(v) << ", "
                     << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("

@@ -126,4 +126,37 @@ double to_double(const ex& x, const builtin& b, const std::string& what) {
     }
 }
 
+first_order_system first_order(const mechanics::cauchy_problem& P, const data_values& d, const builtin& b) {
+    const std::size_t M = P.order(), dim = P.is_vector ? 3 : 1;
+    first_order_system sys;
+    std::vector<ex> accel;
+    for (std::size_t i = 0; i < M * dim; ++i) sys.state.push_back(GiNaC::symbol("y" + std::to_string(i)));
+    for (std::size_t i = 0; i < dim; ++i) accel.push_back(GiNaC::symbol("a" + std::to_string(i)));
+    data_values dv = d;
+    if (P.is_vector) {
+        for (std::size_t m = 0; m < M; ++m)
+            dv.vectors[P.unknowns[m]] = vector_literal(sys.state[3 * m], sys.state[3 * m + 1], sys.state[3 * m + 2]);
+        dv.vectors[P.unknowns[M]] = vector_literal(accel[0], accel[1], accel[2]);
+    } else {
+        for (std::size_t m = 0; m < M; ++m) dv.scalars[P.unknowns[m]] = sys.state[m];
+        dv.scalars[P.unknowns[M]] = accel[0];
+    }
+    const ex E = put_values(P.expression, dv);
+    GiNaC::lst eqs, unk;
+    for (const ex& x : components(E)) eqs.append(GiNaC::expand(x) == 0);
+    for (const ex& x : accel) unk.append(x);
+    const ex sol = GiNaC::lsolve(eqs, unk);
+    if (sol.nops() != dim)
+        throw domain_error(b.name + ": the equation cannot be solved for " + P.unknown_name(M) +
+                           " at these values (its leading coefficient is singular)");
+    for (std::size_t i = dim; i < M * dim; ++i) sys.rhs.push_back(sys.state[i]);
+    for (std::size_t i = 0; i < dim; ++i) sys.rhs.push_back(sol.op(i).rhs());
+    for (std::size_t m = 0; m < M; ++m) {
+        const ex x0 = P.is_vector && P.initial[m].is_zero() ? vector_literal(0, 0, 0) : P.initial[m];
+        for (const ex& x : components(put_values_limit(x0, d)))
+            sys.initial.push_back(to_double(x, b, "the initial value of " + P.unknown_name(m)));
+    }
+    return sys;
+}
+
 }  // namespace symrep::lang

@@ -41,4 +41,18 @@ std::vector<GiNaC::ex> components(const GiNaC::ex& c);
 /// evalf(x) as a double; type_error naming b and `what` when x is not a real number.
 double to_double(const GiNaC::ex& x, const builtin& b, const std::string& what);
 
+/// A Cauchy problem of order M with its values put in, as the first-order
+/// system y' = F(t, y) that verify() integrates: the state is x, x', ...,
+/// x^(M-1) by components (symbols y0, y1, ...), F is (x', ..., x^(M-1),
+/// x^(M) solved from the equation), the initial state comes from the
+/// problem's own initial values.
+struct first_order_system {
+    std::vector<GiNaC::ex> state;    ///< the state symbols
+    std::vector<GiNaC::ex> rhs;      ///< their derivatives, in t, the state and no other symbol left by d
+    std::vector<double> initial;     ///< the state at t = 0
+};
+/// Builds it; domain_error (naming b) when the equation cannot be solved for
+/// the highest derivative at these values, type_error when a value is missing.
+first_order_system first_order(const mechanics::cauchy_problem& P, const data_values& d, const builtin& b);
+
 }  // namespace symrep::lang
