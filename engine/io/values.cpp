@@ -111,18 +111,15 @@ data_values exact_values(data_values d) {
 }
 
 double to_double(const ex& x, const builtin& b, const std::string& what) {
-    const ex y = GiNaC::evalf(x);
-    if (!GiNaC::is_a<GiNaC::numeric>(y) || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
-        throw type_error(b.name + ": " + what + " does not evaluate to a real number: " + message_text(y) +
-                         " (give every symbol a value)");
-    // evalf above only decides that x is a real number; its digits may be
-    // wrong where x cancels or has a long phase, so the value comes from the
-    // precision-controlled evaluation (numeric/reference.h).
-    if (GiNaC::is_a<GiNaC::numeric>(x)) return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+    if (GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+        return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+    // Precision-controlled (numeric/reference.h): a fixed-precision evalf loses
+    // digits where x cancels or has a long phase.
     try {
         return num::accurate_double(x);
     } catch (const domain_error&) {
-        return GiNaC::ex_to<GiNaC::numeric>(y).to_double();
+        throw type_error(b.name + ": " + what + " does not evaluate to a real number: " +
+                         message_text(GiNaC::evalf(x)) + " (give every symbol a value)");
     }
 }
 
