@@ -13,6 +13,11 @@
 // "Numeric" variants substitute the parameters (exact rationals) before
 // compiling, so the program has one input t; "Symbolic" variants keep
 // w, r0, v0 as 9 more inputs.
+//   Stable/*:     stable_function::eval (numeric/stable_evaluator.h) on the same
+//                 form; counters give the share of points per precision tier.
+//                 Stable_SmallRate scales w by 1e-6 (w t ~ 1e-6 .. 1e-3:
+//                 the formula cancels, binary128); Stable_Binary64Bound is
+//                 tier 1 alone (the program with its running error bound).
 // Run: ./build/symrep_bench --benchmark_filter=Evaluator
 #include <benchmark/benchmark.h>
 
@@ -22,6 +27,7 @@
 #include <cmath>
 
 #include "numeric/evaluator.h"
+#include "numeric/stable_evaluator.h"
 
 using namespace symrep::num;
 using GiNaC::ex;
@@ -206,6 +212,44 @@ void BM_Evaluator_Compile_Numeric(benchmark::State& state) {
 
 }  // namespace
 
+/// stable_function::eval at t = 1e-3, 2e-3, ... with w scaled by `scale`; tiers counted.
+void stable_run(benchmark::State& state, double scale) {
+    symbol t("t");
+    const GiNaC::numeric k = scale == 1 ? GiNaC::numeric(1) : GiNaC::numeric(1, 1000000);
+    const std::vector<ex> r = rotating_frame_solution(t, {k * W[0], k * W[1], k * W[2]}, {R0[0], R0[1], R0[2]},
+                                                      {V0[0], V0[1], V0[2]});
+    const stable_function f(r, {t});
+    double tv = 0, out[3];
+    double tiers[3] = {0, 0, 0};
+    for (auto _ : state) {
+        tv += 1e-3;
+        if (tv > 1) tv = 1e-3;
+        tiers[static_cast<int>(f.eval(&tv, out))] += 1;
+        benchmark::DoNotOptimize(out);
+        benchmark::ClobberMemory();
+    }
+    const double n = std::max(1.0, tiers[0] + tiers[1] + tiers[2]);
+    state.counters["binary64"] = tiers[0] / n;
+    state.counters["binary128"] = tiers[1] / n;
+    state.counters["multiprecision"] = tiers[2] / n;
+}
+
+void BM_Evaluator_Stable_Numeric(benchmark::State& state) { stable_run(state, 1); }
+void BM_Evaluator_Stable_SmallRate(benchmark::State& state) { stable_run(state, 1e-6); }
+
+void BM_Evaluator_Stable_Binary64Bound(benchmark::State& state) {
+    symbol t("t");
+    const stable_function f(numeric_closed_form(t), {t});
+    double tv = 0, out[3], bound[3];
+    for (auto _ : state) {
+        tv += 1e-3;
+        f.eval_binary64(&tv, out, bound);
+        benchmark::DoNotOptimize(out);
+        benchmark::DoNotOptimize(bound);
+        benchmark::ClobberMemory();
+    }
+}
+
 BENCHMARK(BM_Evaluator_Compiled_Numeric);
 BENCHMARK(BM_Evaluator_Lambda_Numeric);
 BENCHMARK(BM_Evaluator_GiNaC_Numeric);
@@ -215,3 +259,6 @@ BENCHMARK(BM_Evaluator_CompiledMany_Numeric);
 BENCHMARK(BM_Evaluator_LambdaMany_Numeric);
 BENCHMARK(BM_Evaluator_CompiledMany_Symbolic);
 BENCHMARK(BM_Evaluator_Compile_Numeric);
+BENCHMARK(BM_Evaluator_Stable_Numeric);
+BENCHMARK(BM_Evaluator_Stable_SmallRate);
+BENCHMARK(BM_Evaluator_Stable_Binary64Bound);

@@ -8,6 +8,7 @@
 // Exit status: 0 when every statement succeeded, 1 otherwise, 2 on bad usage.
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -35,6 +36,9 @@ const char* usage_text =
     "  --stop-on-error stop at the first failed statement (exit status 1)\n"
     "  --time-limit S  stop a statement that runs longer than S seconds (an error; the run goes on)\n"
     "  --no-caret      error reports without the source line and caret\n"
+    "  --unicode       print cross and scalar products of vectors as w \u00d7 r, w \u00b7 r\n"
+    "  --ascii         print them as w x r, w . r (the default, except at an interactive\n"
+    "                  prompt on a terminal in a UTF-8 locale)\n"
     "  --doc           print the Markdown reference of all functions and exit\n"
     "  --version       print the version and exit\n"
     "  --help          print this help and exit\n"
@@ -42,6 +46,19 @@ const char* usage_text =
     "Errors are reported on standard error as FILE:LINE:COL: error: MESSAGE, then the\n"
     "source line with a caret under the column; the run continues with the next\n"
     "statement (unless --stop-on-error). Exit status 1 if any statement failed.\n";
+
+/// True when the character type locale of the environment (LC_ALL, else
+/// LC_CTYPE, else LANG: the first that is set and not empty) is UTF-8.
+bool utf8_locale() {
+    for (const char* var : {"LC_ALL", "LC_CTYPE", "LANG"}) {
+        const char* v = std::getenv(var);
+        if (!v || !*v) continue;
+        std::string s(v);
+        for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return s.find("utf-8") != std::string::npos || s.find("utf8") != std::string::npos;
+    }
+    return false;
+}
 
 /// The interactive prompt: repl/interactive.cpp.
 int interactive(symrep::lang::session& s) { return symrep::repl::interactive(s); }
@@ -52,6 +69,7 @@ int main(int argc, char** argv) {
     std::vector<std::pair<bool, std::string>> jobs;  // (is_code, text/path)
     symrep::lang::output_options opts;
     opts.caret = true;
+    int unicode = -1;  // --unicode: 1, --ascii: 0, neither: -1 (chosen below)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--format" || a.rfind("--format=", 0) == 0) {
@@ -93,6 +111,10 @@ int main(int argc, char** argv) {
             ++i;
             continue;
         }
+        if (a == "--unicode" || a == "--ascii") {
+            unicode = a == "--unicode";
+            continue;
+        }
         if (a == "--no-caret") {
             opts.caret = false;
             continue;
@@ -126,10 +148,15 @@ int main(int argc, char** argv) {
         jobs.emplace_back(false, a);
     }
     std::ios::sync_with_stdio(true);
+    const bool prompt = jobs.empty() && isatty(STDIN_FILENO);
+    // Scripts and pipes print ASCII (deterministic in every locale) unless asked;
+    // a person at a UTF-8 terminal sees the thesis's signs.
+    if (unicode < 0) unicode = prompt && isatty(STDOUT_FILENO) && utf8_locale();
+    symrep::set_vector_notation(unicode ? symrep::notation::unicode : symrep::notation::ascii);
     symrep::lang::session s(std::cout, std::cerr);
     s.options() = opts;
     if (jobs.empty()) {
-        if (isatty(STDIN_FILENO)) return interactive(s);
+        if (prompt) return interactive(s);
         std::stringstream ss;
         ss << std::cin.rdbuf();
         s.run_string(ss.str(), "<stdin>");

@@ -197,6 +197,7 @@ TEST(CauchyProblem, BadProblemsGetClearMessages) {
         {"ode(y' + y = 1)", "initial conditions"},
         {"vector r0\node(r' = 0, r(0) = \"a\")", "initial value"},
         {"verify(1, 2, [], 1)", "made by ode"},
+        {"vector r0\nverify(ode(r' = 0, r(0) = r0), r0, [r0 = [1, 2, 3]], 1, 10, \"rk4\")", "no error control"},
         {"vector w\neval(w x w + w, [w = 3], t = 1)", "vector [x, y, z]"},
         {"vector w\neval(w, [w = [1, 2, 3]], t = 1) + 1", "cannot add"},
         {"vector w\nw + 1", "vector"},

@@ -93,13 +93,6 @@ TEST(Cli, LanguageDocContainsTheReference) {
         << "docs/language.md is out of date: regenerate its reference part with `symrep --doc`";
 }
 
-namespace {
-void called_names(const node& n, std::set<std::string>& out) {
-    if (n.kind == node::call) out.insert(n.text);
-    for (const auto& k : n.kids) called_names(*k, out);
-}
-}  // namespace
-
 // Every builtin's example runs without error. Examples that call functions not
 // registered in this build (the algebra families' constructors, before they are
 // integrated) are skipped and listed.
@@ -113,7 +106,7 @@ TEST(Cli, EveryBuiltinExampleRuns) {
         ASSERT_FALSE(b->signature.empty()) << b->name;
         ASSERT_FALSE(b->summary.empty()) << b->name;
         std::set<std::string> names;
-        for (const auto& s : parse_program(b->example, "<example>")) called_names(*s, names);
+        for (const auto& s : parse_program(b->example, "<example>")) symrep::test::called_names(*s, names);
         EXPECT_TRUE(names.count(b->name)) << "the example of " << b->name << " does not call it";
         std::string missing;
         for (const auto& n : names)

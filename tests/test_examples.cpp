@@ -34,6 +34,7 @@
 #include "algebra/sobrero.h"
 #include "algebra/walsh.h"
 #include "algebra/walsh_complex.h"
+#include "test_util.h"
 
 using namespace symrep;
 using GiNaC::ex;
@@ -88,12 +89,7 @@ const run_result& run_script(const std::string& name) {
     return cache.emplace(name, std::move(r)).first->second;
 }
 
-std::vector<std::string> lines_of(const std::string& s) {
-    std::vector<std::string> v;
-    std::istringstream in(s);
-    for (std::string l; std::getline(in, l);) v.push_back(l);
-    return v;
-}
+using symrep::test::lines_of;
 
 /// The line printed right after the heading line `heading` (exactly equal).
 std::string after_heading(const std::string& out, const std::string& heading) {

@@ -269,3 +269,24 @@ TEST(Scalar, LogarithmsOfRationalsCompareOverPrimes) {
     EXPECT_DOUBLE_EQ(log_modulus(3.0, 4.0), std::log(5.0));
     EXPECT_TRUE(is_zero_scalar(log_modulus(ex(3), ex(4)) - log(ex(5))));
 }
+
+// tan and the hyperbolic functions go through exponentials like sin and cos, so
+// that `==` and expect() see their identities (cosh^2 - sinh^2 = 1 was not 0).
+TEST(Scalar, TanAndHyperbolicIdentitiesAreZero) {
+    const GiNaC::realsymbol x("x"), y("y");
+    using GiNaC::cosh;
+    using GiNaC::sinh;
+    using GiNaC::tanh;
+    EXPECT_TRUE(is_zero_scalar(pow(cosh(x), 2) - pow(sinh(x), 2) - 1));
+    EXPECT_TRUE(is_zero_scalar(tanh(x) - sinh(x) / cosh(x)));
+    EXPECT_TRUE(is_zero_scalar(cosh(x) - (GiNaC::exp(x) + GiNaC::exp(-x)) / 2));
+    EXPECT_TRUE(is_zero_scalar(sinh(2 * x + 1) - 2 * sinh(x + ex(1) / 2) * cosh(x + ex(1) / 2)));
+    EXPECT_TRUE(is_zero_scalar(tanh(x + y) - (tanh(x) + tanh(y)) / (1 + tanh(x) * tanh(y))));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::tan(x) - GiNaC::sin(x) / GiNaC::cos(x)));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::tan(2 * x) - 2 * GiNaC::tan(x) / (1 - pow(GiNaC::tan(x), 2))));
+    // and non-identities stay non-zero
+    EXPECT_FALSE(is_zero_scalar(sinh(x) - cosh(x)));
+    EXPECT_FALSE(is_zero_scalar(cosh(x) - 1));
+    EXPECT_FALSE(is_zero_scalar(GiNaC::tan(x) - x));
+    EXPECT_FALSE(is_zero_scalar(cosh(x) - GiNaC::cos(x)));
+}

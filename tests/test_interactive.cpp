@@ -119,10 +119,10 @@ struct temp_home {
 class terminal {
 public:
     explicit terminal(const std::string& home, const std::string& cwd = ".",
-                      const std::string& env = "NO_COLOR=1 TERM=xterm") {
+                      const std::string& env = "NO_COLOR=1 TERM=xterm", const std::string& args = "") {
         static int counter = 0;
         socket_ = ::testing::TempDir() + "/symrep_tmux_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
-        const std::string cmd = "env " + env + " HOME=" + quote(home) + " " + quote(SYMREP_BINARY);
+        const std::string cmd = "env " + env + " HOME=" + quote(home) + " " + quote(SYMREP_BINARY) + args;
         run(tmux() + " new-session -d -s t -x 160 -y 50 -c " + quote(cwd) + " " + quote(cmd));
     }
     ~terminal() {
@@ -330,6 +330,31 @@ TEST(Interactive, ColourOnlyWhenAllowed) {
         ASSERT_TRUE(t.wait_for("error: unknown function")) << t.screen();
         const bool coloured = t.screen_escapes().find(red) != std::string::npos;
         EXPECT_EQ(coloured, std::string(env) == "TERM=xterm") << env;
+    }
+}
+
+// At a UTF-8 terminal the products print as × and · (and read back); in
+// another locale, or with --ascii, as x and .
+TEST(Interactive, UnicodeNotationInAUtf8Locale) {
+    REQUIRE_TMUX();
+    temp_home home;
+    struct setting {
+        const char* env;
+        const char* args;
+        bool unicode;
+    };
+    for (const setting& c : {setting{"LC_ALL=C.UTF-8", "", true}, setting{"LC_ALL= LC_CTYPE= LANG=en_US.utf8", "", true},
+                             setting{"LC_ALL=C", "", false}, setting{"LC_ALL=C.UTF-8", " --ascii", false}}) {
+        terminal t(home.path, ".", std::string("NO_COLOR=1 TERM=xterm ") + c.env, c.args);
+        ASSERT_TRUE(t.ready()) << t.screen();
+        t.line("vector a, b; a x b; (a . b)*a");
+        ASSERT_TRUE(t.wait_for("%2 = ")) << t.screen();
+        const std::string s = t.screen();
+        const bool unicode = s.find("%1 = a \xC3\x97 b\n%2 = (a \xC2\xB7 b)*a") != std::string::npos;
+        const bool ascii = s.find("%1 = a x b\n%2 = (a . b)*a") != std::string::npos;
+        EXPECT_TRUE(c.unicode ? unicode : ascii) << c.env << c.args << "\n" << s;
+        t.line("a \xC3\x97 b == a x b");
+        EXPECT_TRUE(t.wait_for("%3 = true")) << t.screen();
     }
 }
 

@@ -33,14 +33,54 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& w) {
     return W;  // W r = w x r
 }
 
+/// x'' = -omega^2 x, x(0) = x0, x'(0) = v0, with its exact solution.
+struct oscillator {
+    double omega = 1.7, x0 = 0.8, v0 = -0.3;
+    rhs_function rhs() const {
+        return [w = omega](double, const double* y, double* d) {
+            d[0] = y[1];
+            d[1] = -w * w * y[0];
+        };
+    }
+    double x(double t) const { return x0 * std::cos(omega * t) + v0 / omega * std::sin(omega * t); }
+};
+
 }  // namespace
 
-TEST(NumericIntegrate, HarmonicOscillatorEveryStepper) {
-    const double omega = 1.7, x0 = 0.8, v0 = -0.3;
-    auto f = [&](double, const double* y, double* d) {
-        d[0] = y[1];
-        d[1] = -omega * omega * y[0];
+// rk4 with a fixed step: fourth order, so halving the step divides the global
+// error by about 16 (between 12 and 20 allowed); 4 evaluations per step; every
+// output time is hit exactly (the last step before it is shortened); no step: type_error.
+TEST(NumericIntegrate, FixedStepRungeKutta4) {
+    const oscillator h;
+    const std::vector<double> times = linspace(0, 20, 11);
+    auto error_with = [&](double step, integration_result& r) {
+        integration_options o;
+        o.stepper = stepper_kind::rk4;
+        o.fixed_step = step;
+        r = integrate(h.rhs(), 0.0, {h.x0, h.v0}, times, o);
+        double err = 0;
+        for (std::size_t i = 0; i < times.size(); ++i) err = std::max(err, std::fabs(r.states(i, 0) - h.x(times[i])));
+        return err;
     };
+    integration_result r1, r2;
+    const double e1 = error_with(0.02, r1), e2 = error_with(0.01, r2);
+    EXPECT_LT(e1, 1e-5);
+    EXPECT_GT(e1 / e2, 12.0);
+    EXPECT_LT(e1 / e2, 20.0);
+    EXPECT_EQ(r1.rhs_evaluations, 4 * r1.steps);
+    EXPECT_GE(r1.steps, 1000u);  // 10 intervals of 2 = 100 steps of 0.02 each (+ a rounding remainder)
+    EXPECT_LE(r1.steps, 1010u);
+    EXPECT_EQ(stepper_from_name("rk4"), stepper_kind::rk4);
+    EXPECT_STREQ(stepper_name(stepper_kind::rk4), "rk4");
+    integration_options o;
+    o.stepper = stepper_kind::rk4;
+    EXPECT_THROW(integrate(h.rhs(), 0.0, {h.x0, h.v0}, times, o), type_error);
+}
+
+TEST(NumericIntegrate, HarmonicOscillatorEveryStepper) {
+    const oscillator h;
+    const double omega = h.omega, x0 = h.x0, v0 = h.v0;
+    const rhs_function f = h.rhs();
     const std::vector<double> times = linspace(0, 20, 41);
     for (stepper_kind k : all_steppers) {
         integration_options o;
@@ -50,9 +90,8 @@ TEST(NumericIntegrate, HarmonicOscillatorEveryStepper) {
         double err = 0;
         for (std::size_t i = 0; i < times.size(); ++i) {
             const double t = times[i];
-            const double x = x0 * std::cos(omega * t) + v0 / omega * std::sin(omega * t);
             const double v = -x0 * omega * std::sin(omega * t) + v0 * std::cos(omega * t);
-            err = std::max({err, std::fabs(r.states(i, 0) - x), std::fabs(r.states(i, 1) - v)});
+            err = std::max({err, std::fabs(r.states(i, 0) - h.x(t)), std::fabs(r.states(i, 1) - v)});
         }
         EXPECT_LT(err, 1e-8) << stepper_name(k);
         EXPECT_EQ(r.state(0)[0], x0);  // t0 is among the output times: the initial state itself

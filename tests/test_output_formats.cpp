@@ -235,6 +235,15 @@ TEST(ScriptMode, ErrorsShowTheLineAndACaret) {
     EXPECT_EQ(plain.err, "<command line>:1:1: error: unknown function 'nosuch' (help() lists all functions)\n");
 }
 
+// Results written before an error come before its report when both streams go
+// to one pipe (symrep s.sr 2>&1 | less; the transcript tests rely on it): std::cerr
+// is tied to std::cout, so a report flushes the results first.
+TEST(ScriptMode, ErrorReportsKeepTheirPlaceInAMergedStream) {
+    cli_result r = run_symrep("--no-caret -e '1 + 1' -e 'nosuch(1)' -e '3 + 3'", nullptr, "", true);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.out, "2\n<command line>:1:1: error: unknown function 'nosuch' (help() lists all functions)\n6\n");
+}
+
 TEST(ScriptMode, LoadRunsAnotherScriptInTheSameSession) {
     const std::string inner = temp_path("inner.sr");
     std::ofstream(inner) << "k := 7\nk + 1\nnosuch()\n";

@@ -126,7 +126,7 @@ TEST(Plot, BadInputsGiveClearMessages) {
     EXPECT_NE(what_of([&] { t.val("plot(sin(a*t), [], t = [0, 1], \"" + d + "/a.png\")"); })
                   .find("symbol 'a' has no value"),
               std::string::npos);
-    EXPECT_NE(what_of([&] { t.val("trajectory(r0*t, [], t = [0, 1], \"" + d + "/a.png\")"); }).find("trajectory: subs_components: no components given for the vector r0"),
+    EXPECT_NE(what_of([&] { t.val("trajectory(r0*t, [], t = [0, 1], \"" + d + "/a.png\")"); }).find("trajectory: no value given for the vector r0"),
               std::string::npos);
     // a value that is not a number
     EXPECT_NE(what_of([&] { t.val("plot(sin(a*t), [a = b], t = [0, 1], \"" + d + "/a.png\")"); }).find("b"),

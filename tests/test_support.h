@@ -1,8 +1,10 @@
 // tests/test_support.h -- helpers shared by the language tests: two tiny
 // test-only algebras (the complex numbers C and the dual numbers D, j^2 = 0)
-// registered as builtins cplx() and dual(), and a value-to-ex shortcut.
+// registered as builtins cplx() and dual(), a value-to-ex shortcut, and the
+// names a script calls.
 #pragma once
 
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -11,6 +13,7 @@
 #include "algebra/algebra.h"
 #include "algebra/element.h"
 #include "io/interpreter.h"
+#include "io/parser.h"
 
 namespace symrep::test {
 
@@ -67,5 +70,11 @@ struct test_session {
 
 /// Mathematical equality of expressions.
 inline bool same(const GiNaC::ex& a, const GiNaC::ex& b) { return GiNaC::normal(a - b).is_zero(); }
+
+/// Adds the names of the functions called anywhere in the syntax tree n to out.
+inline void called_names(const lang::node& n, std::set<std::string>& out) {
+    if (n.kind == lang::node::call) out.insert(n.text);
+    for (const auto& k : n.kids) called_names(*k, out);
+}
 
 }  // namespace symrep::test

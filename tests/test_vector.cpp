@@ -200,6 +200,11 @@ TEST_F(Vec, TimeDerivative) {
     EXPECT_TRUE(equal(diff_t(cross(r, r1), t), cross(r, r2)));
     EXPECT_TRUE(equal(diff_t(cos(u * t) * lit(1, t, 0), t), -u * sin(u * t) * lit(1, t, 0) + cos(u * t) * lit(0, 1, 0)));
     EXPECT_THROW(derivative(w), type_error);
+    // the derivative of a constant literal is [0, 0, 0]; products with it vanish
+    EXPECT_TRUE(diff_t(cross(w, lit(0, 0, 1)) + dot(r0, lit(1, 2, 3)) * w, t).is_zero());
+    EXPECT_TRUE(cross(w, lit(0, 0, 0)).is_zero());
+    EXPECT_TRUE(dot(lit(0, 0, 0), r0).is_zero());
+    EXPECT_TRUE(triple(w, lit(0, 0, 0), r0).is_zero());
 }
 
 TEST_F(Vec, DeterministicText) {
@@ -223,7 +228,7 @@ TEST_F(Vec, DeterministicText) {
     EXPECT_EQ(to_string(canonical(cross(w, cross(w, r0)))), "-|w|^2*r0 + (r0 . w)*w");
     EXPECT_EQ(to_string(cross(w, cross(w, r0))), "-(w x (r0 x w))");  // r0 < w by name
     EXPECT_EQ(to_string(norm(w) * dot(w, r0)), "(r0 . w)*|w|");
-    EXPECT_EQ(to_string(canonical(triple(c, b, a))), "-[a, b, c]");
+    EXPECT_EQ(to_string(canonical(triple(c, b, a))), "-(a . (b x c))");
     EXPECT_EQ(to_string(canonical(dot(w, r0) / dot(w, w) * w)), "(r0 . w)*w/|w|^2");
 }
 

@@ -85,38 +85,65 @@ inline GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
     return m(e);
 }
 
-/// sin and cos of linear combinations written through exponentials: with one
-/// symbol X_m standing for e^(i m) per monomial m of the arguments, sin(sum c_k m_k)
-/// = (E - 1/E)/(2i), cos = (E + 1/E)/2, E = prod X_{m_k}^{c_k}. A trigonometric
-/// polynomial in such arguments is 0 iff this rational function in the X_m is 0,
-/// so the zero test sees the addition theorems (sin((a + b) t) = ...).
+/// True when e contains tan, sinh, cosh or tanh.
+inline bool has_tan_or_hyperbolic(const GiNaC::ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_the_function<GiNaC::tan_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::sinh_SERIAL>(*it) ||
+            GiNaC::is_the_function<GiNaC::cosh_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::tanh_SERIAL>(*it))
+            return true;
+    return false;
+}
+
+/// sin and cos (and tan) of linear combinations written through exponentials:
+/// with one symbol X_m standing for e^(i m) per monomial m of the arguments,
+/// sin(sum c_k m_k) = (E - 1/E)/(2i), cos = (E + 1/E)/2, E = prod X_{m_k}^{c_k}.
+/// A trigonometric polynomial in such arguments is 0 iff this rational function
+/// in the X_m is 0, so the zero test sees the addition theorems (sin((a + b) t)
+/// = ...). Likewise sinh, cosh, tanh with symbols Y_m standing for e^m, and
+/// exp(u) = prod Y_{m_k}^{c_k} when the expression has a hyperbolic function
+/// (cosh(x)^2 - sinh(x)^2 = 1, cosh(x) = (e^x + e^-x)/2).
 inline GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
     struct to_exp : GiNaC::map_function {
-        std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> X;
-        GiNaC::ex operator()(const GiNaC::ex& x) override {
-            const GiNaC::ex y = x.map(*this);
-            const bool s = GiNaC::is_the_function<GiNaC::sin_SERIAL>(y);
-            if (!s && !GiNaC::is_the_function<GiNaC::cos_SERIAL>(y)) return y;
-            const GiNaC::ex u = GiNaC::expand(y.op(0));
-            if (u.has(GiNaC::I)) return y;
+        std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> X, Y;
+        bool exponentials = false;  ///< also write exp(u) through the Y_m
+        // prod over the terms c m of u of V_m^c, times e^(k c0) for a numeric term c0
+        GiNaC::ex power(const GiNaC::ex& u, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& V, const GiNaC::ex& k) {
             GiNaC::ex E = 1;
             for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(u) ? u.nops() : 1); ++i) {
                 GiNaC::ex term = GiNaC::is_a<GiNaC::add>(u) ? u.op(i) : u, c = 1;
                 if (GiNaC::is_a<GiNaC::numeric>(term)) {  // a constant phase: keep it as a number
-                    E *= GiNaC::exp(GiNaC::I * term);
+                    E *= GiNaC::exp(k * term);
                     continue;
                 }
                 if (GiNaC::is_a<GiNaC::mul>(term) && GiNaC::is_a<GiNaC::numeric>(term.op(term.nops() - 1))) {
                     c = term.op(term.nops() - 1);
                     term = term / c;
                 }
-                auto it = X.find(term);
-                if (it == X.end()) it = X.emplace(term, GiNaC::realsymbol()).first;  // a formal variable
+                auto it = V.find(term);
+                if (it == V.end()) it = V.emplace(term, GiNaC::realsymbol()).first;  // a formal variable
                 E *= GiNaC::pow(it->second, c);
             }
-            return s ? (E - 1 / E) / (2 * GiNaC::I) : (E + 1 / E) / 2;
+            return E;
+        }
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1) return y;
+            const GiNaC::ex u = GiNaC::expand(y.op(0));
+            if (u.has(GiNaC::I)) return y;
+            if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(y) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(y) ||
+                GiNaC::is_the_function<GiNaC::tan_SERIAL>(y)) {
+                const GiNaC::ex E = power(u, X, GiNaC::I), s = (E - 1 / E) / (2 * GiNaC::I), c = (E + 1 / E) / 2;
+                return GiNaC::is_the_function<GiNaC::sin_SERIAL>(y) ? s
+                       : GiNaC::is_the_function<GiNaC::cos_SERIAL>(y) ? c : s / c;
+            }
+            const bool sh = GiNaC::is_the_function<GiNaC::sinh_SERIAL>(y), ch = GiNaC::is_the_function<GiNaC::cosh_SERIAL>(y),
+                       th = GiNaC::is_the_function<GiNaC::tanh_SERIAL>(y);
+            if (!sh && !ch && !th && !(exponentials && GiNaC::is_the_function<GiNaC::exp_SERIAL>(y))) return y;
+            const GiNaC::ex H = power(u, Y, 1), s = (H - 1 / H) / 2, c = (H + 1 / H) / 2;
+            return sh ? s : ch ? c : th ? s / c : H;
         }
     } f;
+    f.exponentials = has_tan_or_hyperbolic(e);
     return f(e);
 }
 
@@ -172,9 +199,9 @@ inline bool has_symbolic_square_root(const GiNaC::ex& e) {
 }
 
 /// Exact zero test: true when the expression normalizes to 0 (logarithms and
-/// powers of rational numbers are compared over primes, sin and cos through
-/// exponentials, and square roots of expressions as algebraic symbols, when
-/// plain normalization does not decide).
+/// powers of rational numbers are compared over primes, sin, cos, tan and the
+/// hyperbolic functions through exponentials, and square roots of expressions
+/// as algebraic symbols, when plain normalization does not decide).
 inline bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
     guard_expansion(x, "zero test", true);
@@ -186,7 +213,8 @@ inline bool is_zero_scalar(const GiNaC::ex& x) {
     } else if (GiNaC::normal(y).is_zero()) {
         return true;
     }
-    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild()))) return false;
+    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y))
+        return false;
     const GiNaC::ex z = trig_exponential_form(y);
     guard_expansion(z, "zero test", true);
     return GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z);

@@ -18,7 +18,7 @@ struct node {
         boolean,   ///< text: "true" / "false"
         ident,     ///< text: the name
         result,    ///< text: "%", "%%" or "%N" (a previous result, see session::results)
-        unary,     ///< text: "-" or "+"; kids[0]
+        unary,     ///< text: "-" or "+", or "|" for |kids[0]| (norm of a vector, abs of a scalar); kids[0]
         binary,    ///< text: ^ = == != < > <= >=, x (cross), . (dot); kids[0], kids[1]
         chain,     ///< a run of + - (or * /), left to right: kids[0] op[0] kids[1] op[1] ...;
                    ///< text holds one operator character per step, op_pos their places

@@ -94,5 +94,8 @@ void register_plot_builtins(registry& r);         // io/builtins_plot.cpp: plot,
 
 /// solve(P) for a problem made by ode(...): the exact solution (io/builtins_mechanics.cpp).
 value solve_problem(const value& p);
+/// solve(P, values): the scene's exact solution in its smallest model; the model
+/// report goes to c.out() (io/builtins_mechanics.cpp, mechanics/scene.h).
+value solve_scene(const builtin& b, const std::vector<value>& a, context& c);
 
 }  // namespace symrep::lang

@@ -292,17 +292,19 @@ void register_core_builtins(registry& r) {
             if (!is_a<GiNaC::relational>(e)) throw type_error(b.name + ": argument 1 must be a relation");
             return value(e.op(1));
         });
-    add(r, "solve", "solve([equations], [x, y, ...])  |  solve(P)",
+    add(r, "solve", "solve([equations], [x, y, ...])  |  solve(P)  |  solve(P, values)",
         "Solves a system of linear equations for the given symbols; returns the list of solutions [x = ..., ...]. "
         "With a problem P made by ode(...), returns its exact solution x(t) in coordinate-free form: "
         "sum over the data vectors P of c0(t) P + c1(t) w x P + c2(t) w x (w x P), derived in the algebra of "
-        "K = w x (R + C, idempotents (w . x) w/|w|^2 and -w x (w x x)/|w|^2).",
-        "(VI.1.13-15), (VI.1.26-38), (VI.1.81)", "solve([x + y = 3, x - y = 1], [x, y])", 1, 2,
-        [](const builtin& b, const args_t& a, context&) {
-            if (a[0].is_problem()) {
-                if (a.size() != 1) throw type_error(b.name + ": solve(P) takes the problem only");
-                return solve_problem(a[0]);
-            }
+        "K = w x (R + C, idempotents (w . x) w/|w|^2 and -w x (w x x)/|w|^2). "
+        "With values (as for eval: [w = [0, 0, W], g = [a, b, 0], w0 = 0], symbolic or numeric), solves the "
+        "scene in its smallest exact model: terms that vanish for the values are dropped, each data vector "
+        "P gets the algebra of its local minimal polynomial (X if w x P = 0, X^2 + |w|^2 if w . P = 0), "
+        "only the scalar problems needed are solved; prints the model, the method and why (lines "
+        "'solve: ...'), and returns the solution with the values put in, equal to solve(P) with them.",
+        "(VI.1.13-15), (VI.1.26-38), (VI.1.81), (II.1.23-24)", "solve([x + y = 3, x - y = 1], [x, y])", 1, 2,
+        [](const builtin& b, const args_t& a, context& c) {
+            if (a[0].is_problem()) return a.size() == 1 ? solve_problem(a[0]) : solve_scene(b, a, c);
             if (a.size() != 2)
                 throw type_error(b.name + ": with one argument, solve needs a problem made by ode(...), not " +
                                  a[0].a_kind() +

@@ -18,6 +18,8 @@
 #include "io/values.h"
 #include "mechanics/cauchy_problem.h"
 #include "mechanics/rotation_operator_algebra.h"
+#include "mechanics/scene.h"
+#include "numeric/reference.h"
 #include "numeric/verify.h"
 #include "vector/vector.h"
 
@@ -71,9 +73,40 @@ std::string seconds(double s) {
     return os.str();
 }
 
+/// Where the stable evaluator raised the precision of the closed form (numeric/stable_evaluator.h).
+std::string precision_note(const num::verify_result& v) {
+    const auto& n = v.closed_form_tiers;
+    if (n[1] + n[2] == 0) return "";
+    std::ostringstream os;
+    os << " (";
+    if (n[1]) os << n[1] << " points in binary128";
+    if (n[1] && n[2]) os << ", ";
+    if (n[2]) os << n[2] << " in multiprecision";
+    os << ")";
+    return os.str();
+}
+
 }  // namespace
 
 value solve_problem(const value& p) { return value(mechanics::solve(p.as_problem())); }
+
+namespace {
+
+// [w = [0, 0, W], g = [a, b, 0], ...] as the values of a scene (as for eval)
+mechanics::parameter_values scene_values(const args_t& a, std::size_t i, const builtin& b) {
+    const data_values d = read_values(a[i], b, i);
+    return {d.vectors, d.scalars};
+}
+
+}  // namespace
+
+value solve_scene(const builtin& b, const args_t& a, context& c) {
+    const auto& P = problem_arg(a, 0, b);
+    const mechanics::scene_solution s = mechanics::solve(P, scene_values(a, 1, b));
+    std::istringstream report(s.model.report());
+    for (std::string line; std::getline(report, line);) c.out() << b.name << ": " << line << "\n";
+    return value(s.x);
+}
 
 void register_mechanics_builtins(registry& r) {
     add(r, "cross", "cross(a, b)", "The cross product a x b (same as the operator x).", "",
@@ -144,12 +177,15 @@ void register_mechanics_builtins(registry& r) {
         [](const builtin& b, const args_t&, context&) -> value {
             throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
         });
-    add(r, "check", "check(P, s)",
+    add(r, "check", "check(P, s [, values])",
         "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "
         "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md); "
-        "otherwise prints what is not 0 and returns false.",
-        "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 2, [](const builtin& b, const args_t& a, context& c) {
-            const auto& P = problem_arg(a, 0, b);
+        "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
+        "values put in: the check of a scene's solution solve(P, values).",
+        "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
+            const auto& P0 = problem_arg(a, 0, b);
+            const mechanics::cauchy_problem P =
+                a.size() == 3 ? mechanics::with_values(P0, scene_values(a, 2, b)) : P0;
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
             const mechanics::solution_check k = mechanics::check(P, s);
             if (!k.residual_zero) c.out() << "check: the residual is " << print_ex(k.residual) << ", not 0\n";
@@ -159,16 +195,31 @@ void register_mechanics_builtins(registry& r) {
                             << print_ex(k.initial_differences[m]) << "\n";
             return value(bool(k));
         });
+    add(r, "model", "model(P, values)",
+        "The smallest exact model of the scene (P made by ode(...), values as for eval): how each data "
+        "vector relates to the operator K = w x (0, along w, perpendicular to w, general) and the algebra "
+        "R[X]/(m_P) of its local minimal polynomial, the terms that vanish for the values, the scene's "
+        "algebra (the lcm of the m_P), and the method with its reason; the report solve(P, values) prints, "
+        "as a string, without solving.",
+        "(II.1.23-24), (VI.1.12-15)",
+        "vector w, g, r0, v0\nmodel(ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0), [w = [0, 0, 1], g = [0, 0, -10]])",
+        2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
+        });
     add(r, "eval", "eval(e, values, t = T)",
         "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
         "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
         "number or a list of numbers. Returns a number or a list of components (a list of those for "
         "several times). Where the values make the closed form singular (w = 0 in sin(|w| t)/|w|), "
-        "the exact limit is taken.",
+        "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
+        "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
+        "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases).",
         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const ex& e = arg_ex(a, 0, b);
-            data_values d = read_values(a[1], b, 1);
+            // floats taken as the exact numbers they are, so that nothing is rounded before
+            // to_double's precision-controlled evaluation (cancellation, long phases)
+            const ex e = num::exact_floats_of(arg_ex(a, 0, b));
+            const data_values d = exact_values(read_values(a[1], b, 1));
             std::vector<ex> times;
             ex tsym;
             if (a.size() == 3) {
@@ -178,20 +229,26 @@ void register_mechanics_builtins(registry& r) {
                 tsym = tr.lhs();
                 const ex T = tr.rhs();
                 if (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T))  // t = [T1, T2, ...]
-                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(T.op(i));
+                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::exact_floats_of(T.op(i)));
                 else
-                    times.push_back(T);
+                    times.push_back(num::exact_floats_of(T));
             }
             if (a.size() == 3 && a[2].is_ex() && times.empty())
                 throw type_error(b.name + ": no time given");
-            if (times.empty()) return numbers(put_values_limit(e, d), b);
-            list out;
-            for (const ex& T : times) {
-                data_values dt = d;
-                dt.scalars[tsym] = T;
-                out.push_back(numbers(put_values_limit(e, dt), b));
+            try {
+                if (times.empty()) return numbers(put_values_limit(e, d), b);
+                list out;
+                for (const ex& T : times) {
+                    data_values dt = d;
+                    dt.scalars[tsym] = T;
+                    out.push_back(numbers(put_values_limit(e, dt), b));
+                }
+                return times.size() == 1 ? out[0] : value(out);
+            } catch (const type_error& x) {
+                const std::string m = x.what();
+                if (m.rfind(b.name + ": ", 0) == 0) throw;
+                throw type_error(b.name + ": " + m);
             }
-            return times.size() == 1 ? out[0] : value(out);
         });
     add(r, "verify", "verify(P, s, values, T [, n [, stepper]])",
         "Compares the closed form s of the problem P with a numerical integration of P itself "
@@ -204,60 +261,30 @@ void register_mechanics_builtins(registry& r) {
         [](const builtin& b, const args_t& a, context& c) -> value {
             const auto& P = problem_arg(a, 0, b);
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
-            data_values d = read_values(a[2], b, 2);
+            data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
             const double T = to_double(arg_ex(a, 3, b), b, "the end time T");
             if (!(T > 0) || !std::isfinite(T)) throw type_error(b.name + ": the end time T must be positive");
             const long n = a.size() > 4 ? arg_int(a, 4, b, 2, 10000000) : 200;
             num::integration_options opt;
             opt.abs_tol = opt.rel_tol = 1e-12;
             if (a.size() > 5) opt.stepper = num::stepper_from_name(arg_string(a, 5, b));
+            if (opt.stepper == num::stepper_kind::rk4)
+                throw type_error(b.name + ": rk4 has no error control; use rkf78, bulirsch_stoer or dopri5");
             const auto t0 = std::chrono::steady_clock::now();
             // the closed form with the values put in (t stays free)
             const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
             d.scalars.erase(P.t);
             const std::vector<ex> cf = components(put_values_limit(s, d));
             // the first-order system: state x, x', ..., x^(M-1); x^(M) solved from the equation
-            const std::size_t M = P.order(), dim = P.is_vector ? 3 : 1;
-            std::vector<ex> state, rhs, accel;
-            for (std::size_t i = 0; i < M * dim; ++i) state.push_back(GiNaC::symbol("y" + std::to_string(i)));
-            for (std::size_t i = 0; i < dim; ++i) accel.push_back(GiNaC::symbol("a" + std::to_string(i)));
-            ex E;
-            if (P.is_vector) {
-                data_values dv = d;
-                for (std::size_t m = 0; m < M; ++m)
-                    dv.vectors[P.unknowns[m]] = vector_literal(state[3 * m], state[3 * m + 1], state[3 * m + 2]);
-                dv.vectors[P.unknowns[M]] = vector_literal(accel[0], accel[1], accel[2]);
-                E = put_values(P.expression, dv);
-            } else {
-                data_values dv = d;
-                for (std::size_t m = 0; m < M; ++m) dv.scalars[P.unknowns[m]] = state[m];
-                dv.scalars[P.unknowns[M]] = accel[0];
-                E = put_values(P.expression, dv);
-            }
-            GiNaC::lst eqs, unk;
-            for (const ex& x : components(E)) eqs.append(GiNaC::expand(x) == 0);
-            for (const ex& x : accel) unk.append(x);
-            const ex sol = GiNaC::lsolve(eqs, unk);
-            if (sol.nops() != dim)
-                throw domain_error(b.name + ": the equation cannot be solved for " + P.unknown_name(M) +
-                                   " at these values (its leading coefficient is singular)");
-            for (std::size_t i = dim; i < M * dim; ++i) rhs.push_back(state[i]);
-            for (std::size_t i = 0; i < dim; ++i) rhs.push_back(sol.op(i).rhs());
-            // the initial state from P's own data, not from s
-            std::vector<double> y0;
-            for (std::size_t m = 0; m < M; ++m)
-                for (const ex& x : components(put_values_limit(P.is_vector && P.initial[m].is_zero()
-                                                                   ? vector_literal(0, 0, 0)
-                                                                   : P.initial[m],
-                                                               d)))
-                    y0.push_back(to_double(x, b, "the initial value of " + P.unknown_name(m)));
+            const first_order_system sys = first_order(P, d, b);
             const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            const num::verify_result v = num::verify(cf, t, rhs, state, y0, {}, 0.0, T, std::size_t(n), opt);
+            const num::verify_result v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T,
+                                                        std::size_t(n), opt);
             static const char* axes[] = {"x", "y", "z"};
             c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
-                    << " (component " << (dim == 3 ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
+                    << " (component " << (P.is_vector ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
                     << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
-                    << "]; closed form " << seconds(v.closed_form_seconds) << ", "
+                    << "]; closed form " << seconds(v.closed_form_seconds) << precision_note(v) << ", "
                     << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("
                     << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
                     << "\n";

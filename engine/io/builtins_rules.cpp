@@ -8,6 +8,7 @@
 #include "algebra/scalar.h"
 #include "io/builtins.h"
 #include "io/interpreter.h"
+#include "io/printer.h"
 #include "rules/rules.h"
 #include "vector/vector.h"
 
@@ -66,13 +67,14 @@ void register_rules_builtins(registry& r) {
             }
             const symrep::rules::rewrite_result res = set->rewrite(e, std::size_t(n));
             if (res.bound_hit) {
-                std::string last;
+                std::string last, partial = print_ex(res.result);  // in the language's notation
+                if (partial.size() > 160) partial = partial.substr(0, 157) + "...";
                 if (res.last)
                     last = "; last rule applied: " + res.last->name + " (" + res.last->where.file + ":" +
                            std::to_string(res.last->where.line) + ")";
                 throw domain_error(b.name + ": no fixed point after " + std::to_string(n) +
                                    " rewrites, the rules may undo each other" + last + "; partial result " +
-                                   message_text(res.result));
+                                   partial);
             }
             return value(res.result);
         });

@@ -39,10 +39,13 @@ std::string clear_message(const std::string& m) {
          "a matrix cannot be added to a number here (use a multiple of the identity matrix)"},
         {"Not a 32-bit integer", "a number is too large here (it must fit in 32 bits)"},
         {"Not a 64-bit integer", "a number is too large here (it must fit in 64 bits)"},
-        {"tan_eval(): simple pole", "tan: a pole (tan is undefined at pi/2 + k pi)"},
     };
     for (const known& k : table)
         if (m.find(k.raw) != std::string::npos) return k.clear;
+    // tan_eval(): simple pole, tanh_eval(): ..., the poles GiNaC finds while evaluating
+    const std::size_t pole = m.find("_eval(): simple pole");
+    if (pole != std::string::npos && pole > 0 && m.find_first_of(" :") > pole)
+        return m.substr(0, pole) + ": the argument is a pole (the value is infinite)";
     return m;
 }
 
@@ -383,6 +386,14 @@ value binary_op(const std::string& op, const value& a, const value& b) {
         return ex(R(a.as_ex(), b.as_ex(), o));
     }
     // expressions
+    if (a.is_ex() && b.is_ex() && (op == "+" || op == "-") && (is_vector_ex(a) || is_vector_ex(b)) &&
+        (is_a<GiNaC::matrix>(a.as_ex()) || is_a<GiNaC::matrix>(b.as_ex()))) {
+        // w + [1, 2, 3], 2*[0, 0, t] - r0: a vector sum with a literal term, as the
+        // printer writes solutions (matrix arithmetic would refuse the abstract vector)
+        const ex r = op == "+" ? a.as_ex() + b.as_ex() : a.as_ex() - b.as_ex();
+        (void)is_vector(r);  // [1, 2] + w: type_error
+        return r;
+    }
     if (a.is_ex() && b.is_ex()) {
         ex r = ex_binary(op, a.as_ex(), b.as_ex());
         if (is_vector_ex(a) || is_vector_ex(b)) (void)is_vector(r);  // w + 1, w*w, w^2: type_error
@@ -437,11 +448,14 @@ value binary_op(const std::string& op, const value& a, const value& b) {
 // session
 
 session::session(std::ostream& out, std::ostream& err)
-    : out_(&out), err_(&err), digits_at_start_(GiNaC::Digits) {
+    : out_(&out), err_(&err), digits_at_start_(GiNaC::Digits), notation_at_start_(symrep::vector_notation()) {
     register_all_builtins(reg_);
 }
 session::session() : session(std::cout, std::cerr) {}
-session::~session() { GiNaC::Digits = digits_at_start_; }  // Digits := n is per session
+session::~session() {  // Digits := n and notation(...) are per session
+    GiNaC::Digits = digits_at_start_;
+    symrep::set_vector_notation(notation_at_start_);
+}
 
 GiNaC::ex session::symbol(const std::string& name) {
     auto it = symbols_.find(name);
@@ -484,15 +498,21 @@ std::string line_of(const std::string& text, int line) {
     return text.substr(start, end - start);
 }
 
-/// Offset of (line, column) in text (both 1-based), clamped to the text.
+bool utf8_continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+/// Byte offset of (line, column) in text (both 1-based; columns count
+/// characters, as the lexer does: UTF-8 continuation bytes do not), clamped to
+/// the text.
 std::size_t offset_of(const std::string& text, int line, int column) {
-    std::size_t start = 0;
+    std::size_t p = 0;
     for (int l = 1; l < line; ++l) {
-        start = text.find('\n', start);
-        if (start == std::string::npos) return text.size();
-        ++start;
+        p = text.find('\n', p);
+        if (p == std::string::npos) return text.size();
+        ++p;
     }
-    return std::min(text.size(), start + static_cast<std::size_t>(std::max(column, 1) - 1));
+    for (int c = 1; c < column && p < text.size() && text[p] != '\n'; ++c)
+        for (++p; p < text.size() && utf8_continuation(text[p]);) ++p;
+    return p;
 }
 
 std::string trimmed(const std::string& s) {
@@ -544,8 +564,9 @@ void session::report(const source_location& where, const std::string& msg) {
             std::string l = line_of(it->second, where.line);
             if (!l.empty() && l.back() == '\r') l.pop_back();
             if (!l.empty() && where.column >= 1 && static_cast<std::size_t>(where.column) <= l.size() + 1) {
-                std::string pad;
-                for (int i = 0; i + 1 < where.column; ++i) pad += l[static_cast<std::size_t>(i)] == '\t' ? '\t' : ' ';
+                std::string pad;  // one blank per character before the column (tabs kept)
+                for (std::size_t i = 0; i < offset_of(l, 1, where.column); ++i)
+                    if (!utf8_continuation(l[i])) pad += l[i] == '\t' ? '\t' : ' ';
                 *err_ << "    " << l << "\n    " << pad << "^\n";
             }
         }
@@ -1045,6 +1066,13 @@ value session::eval_inner(const node& n) {
         }
         case node::unary: {
             value a = eval(*n.kids[0]);
+            if (n.text == "|") {  // |a|: the norm sqrt(a . a) of a vector, the absolute value of a scalar
+                if (is_triple(a)) return value(norm(as_literal(a)));  // |[3, 4, 12]|
+                if (a.is_ex() && is_vector(a.as_ex())) return value(norm(a.as_ex()));
+                if (a.is_ex() && !is_a<GiNaC::relational>(a.as_ex()) && !is_a<GiNaC::matrix>(a.as_ex()))
+                    return value(GiNaC::abs(a.as_ex()));
+                throw type_error("|...| needs a vector or a scalar expression, not " + article(a));
+            }
             if (n.text == "+") {
                 if (a.is_ex() || a.is_element() || a.is_list()) return a;
                 throw type_error("unary '+' needs a number, expression, element or list, not " + article(a));

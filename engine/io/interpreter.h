@@ -20,6 +20,7 @@
 #include "io/builtins.h"
 #include "io/error.h"
 #include "io/value.h"
+#include "vector/vector.h"
 
 namespace symrep::rules {
 class rule_set;
@@ -150,6 +151,7 @@ private:
     output_options opts_;
     bool stopped_ = false;
     long digits_at_start_;  ///< GiNaC::Digits, restored by the destructor
+    symrep::notation notation_at_start_;  ///< symrep::vector_notation(), restored by the destructor
     std::map<std::string, std::string> sources_;  ///< script texts by name (for the caret)
     std::vector<value> results_;  ///< %1, %2, ...
     std::chrono::steady_clock::time_point statement_start_;  ///< for options().time_limit

@@ -14,9 +14,11 @@ struct scanner {
     explicit scanner(const std::string& t) : s(t) {}
     bool done() const { return i >= s.size(); }
     char peek(std::size_t k = 0) const { return i + k < s.size() ? s[i + k] : '\0'; }
+    // Columns count characters: the continuation bytes of UTF-8 do not advance them.
     char get() {
         char c = s[i++];
-        if (c == '\n') { ++line; col = 1; } else { ++col; }
+        if (c == '\n') { ++line; col = 1; }
+        else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) { ++col; }
         return c;
     }
 };
@@ -24,6 +26,18 @@ struct scanner {
 bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+
+// The length of the UTF-8 sequence starting at s[i], or 0 if the bytes there
+// are not one (a lone continuation byte, a truncated or overlong sequence).
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+    const auto b = [&](std::size_t k) { return i + k < s.size() ? static_cast<unsigned char>(s[i + k]) : 0u; };
+    const unsigned c = b(0);
+    const std::size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if ((b(k) & 0xC0) != 0x80) return 0;
+    if ((c == 0xE0 && b(1) < 0xA0) || (c == 0xF0 && b(1) < 0x90) || (c == 0xF4 && b(1) > 0x8F)) return 0;
+    return n;
+}
 
 }  // namespace
 
@@ -108,6 +122,18 @@ std::vector<token> tokenize(const std::string& text) {
             }
             continue;
         }
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            // the Unicode signs of the products (notation("unicode") prints them):
+            // U+00D7 (x) is the cross product, U+00B7 and U+22C5 the scalar product
+            const std::size_t len = utf8_length(text, sc.i);
+            const std::string ch = text.substr(sc.i, len ? len : 1);
+            for (std::size_t k = 0; k < ch.size(); ++k) sc.get();
+            if (ch == "\xC3\x97") push(tok::op, ch, l, co);
+            else if (ch == "\xC2\xB7" || ch == "\xE2\x8B\x85") push(tok::op, ".", l, co);
+            else if (len) push(tok::error, "unexpected character '" + ch + "'", l, co);
+            else push(tok::error, "unexpected character byte " + std::to_string(static_cast<unsigned char>(c)), l, co);
+            continue;
+        }
         sc.get();
         const char n = sc.peek();
         auto two = [&](const char* t) { sc.get(); push(tok::op, t, l, co); };
@@ -127,6 +153,7 @@ std::vector<token> tokenize(const std::string& text) {
             case '(': case '[': ++depth; push(tok::op, std::string(1, c), l, co); break;
             case ')': case ']': if (depth > 0) --depth; push(tok::op, std::string(1, c), l, co); break;
             case '+': case '-': case '*': case '/': case '^': case ',': case '=': case '<': case '>': case '.':
+            case '|':
                 push(tok::op, std::string(1, c), l, co);
                 break;
             default: {

@@ -16,7 +16,8 @@ enum class tok {
     number,      ///< 12, 3.5, 1e-3 (text in `text`)
     ident,       ///< names: letters, digits, '_' (not first digit), then primes: r, r', r''
     string,      ///< "..." (unescaped text in `text`)
-    op,          ///< + - * / ^ ( ) [ ] , . := = == != < > <= >= (the cross product 'x' is an ident)
+    op,          ///< + - * / ^ ( ) [ ] , . | := = == != < > <= >= and U+00D7 (the cross product 'x' is an
+                 ///< ident; U+00B7 and U+22C5 give the op ".")
     result,      ///< a previous result: % (the last), %% (the one before), %3 (numbered)
     separator,   ///< newline or ';' outside brackets
     error,       ///< malformed input; message in `text`

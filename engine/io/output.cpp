@@ -591,6 +591,26 @@ void register_output_builtins(registry& r) {
                     if (!args.empty()) GiNaC::Digits = arg_int(args, 0, b, 1, 100000);
                     return value(ex(numeric(old)));
                 });
+    add_builtin(r, sec, "notation", "notation(\"unicode\" | \"ascii\")",
+                "Sets how cross and scalar products of vectors print, for the rest of the session, and returns "
+                "the previous setting: \"ascii\" writes w x r and w . r, \"unicode\" writes w \u00d7 r and "
+                "w \u00b7 r (U+00D7, U+00B7; the language reads both notations). notation() returns the current one (the symrep program "
+                "starts in unicode at an interactive prompt in a UTF-8 locale, in ascii otherwise; --unicode and "
+                "--ascii choose).",
+                "", "vector w, r; old := notation(\"unicode\"); w x (w x r); notation(old)", 0, 1,
+                [](const builtin& b, const std::vector<value>& args, context&) -> value {
+                    const auto name = [](notation n) { return n == notation::unicode ? "unicode" : "ascii"; };
+                    const notation old = vector_notation();
+                    if (!args.empty()) {
+                        const std::string& n = arg_string(args, 0, b);
+                        if (n == "unicode") set_vector_notation(notation::unicode);
+                        else if (n == "ascii") set_vector_notation(notation::ascii);
+                        else
+                            throw domain_error(b.name + ": the notation is \"unicode\" or \"ascii\", not \"" + n +
+                                               "\"");
+                    }
+                    return value(std::string(name(old)));
+                });
 }
 
 }  // namespace symrep::lang

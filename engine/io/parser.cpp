@@ -149,13 +149,15 @@ node_ptr parser::product() {
 
 // a x b and a . b bind tighter than * and /, and group to the right, so that
 // w x w x r reads w x (w x r) as in the thesis. The name x is the cross
-// product only between two operands (where no name could stand).
+// product only between two operands (where no name could stand); the sign
+// U+00D7 is the cross product wherever it stands (a · b is the lexer's ".").
 node_ptr parser::vector_product() {
     node_ptr a = unary();
     const token& t = peek();
-    const bool cross = t.kind == tok::ident && t.text == "x";
+    const bool sign = is_op("\xC3\x97");
+    const bool cross = sign || (t.kind == tok::ident && t.text == "x");
     if (!cross && !is_op(".")) return a;
-    if (cross) {
+    if (cross && !sign) {
         const token& u = peek(1);
         const bool operand = u.kind == tok::ident || u.kind == tok::number ||
                              (u.kind == tok::op && (u.text == "(" || u.text == "["));
@@ -259,6 +261,15 @@ node_ptr parser::primary() {
                 node_ptr e = expr();
                 expect_op(")", "to close '('");
                 return e;
+            }
+            if (t.text == "|") {
+                // |e|: the printed form of norm(e) (and abs of a scalar). Where an
+                // operand ends, '|' closes the bars: |a|*|b|, ||a|*b|.
+                get();
+                node_ptr n = make(node::unary, t, "|");
+                n->kids.push_back(sum());
+                expect_op("|", "to close |...|");
+                return n;
             }
             if (t.text == "[") {
                 get();

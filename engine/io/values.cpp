@@ -2,6 +2,8 @@
 // builtins_mechanics.cpp, shared by eval, verify, plot, trajectory and hodograph.
 #include "io/values.h"
 
+#include "numeric/reference.h"
+
 #include "algebra/scalar.h"
 #include "io/printer.h"
 #include "vector/vector.h"
@@ -102,12 +104,56 @@ std::vector<ex> components(const ex& c) {
     return out;
 }
 
+data_values exact_values(data_values d) {
+    for (auto& [k, x] : d.vectors) x = num::exact_floats_of(x);
+    for (auto& [k, x] : d.scalars) x = num::exact_floats_of(x);
+    return d;
+}
+
 double to_double(const ex& x, const builtin& b, const std::string& what) {
-    const ex y = GiNaC::evalf(x);
-    if (!GiNaC::is_a<GiNaC::numeric>(y) || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
-        throw type_error(b.name + ": " + what + " does not evaluate to a real number: " + message_text(y) +
-                         " (give every symbol a value)");
-    return GiNaC::ex_to<GiNaC::numeric>(y).to_double();
+    if (GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+        return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+    // Precision-controlled (numeric/reference.h): a fixed-precision evalf loses
+    // digits where x cancels or has a long phase.
+    try {
+        return num::accurate_double(x);
+    } catch (const domain_error&) {
+        throw type_error(b.name + ": " + what + " does not evaluate to a real number: " +
+                         message_text(GiNaC::evalf(x)) + " (give every symbol a value)");
+    }
+}
+
+first_order_system first_order(const mechanics::cauchy_problem& P, const data_values& d, const builtin& b) {
+    const std::size_t M = P.order(), dim = P.is_vector ? 3 : 1;
+    first_order_system sys;
+    std::vector<ex> accel;
+    for (std::size_t i = 0; i < M * dim; ++i) sys.state.push_back(GiNaC::symbol("y" + std::to_string(i)));
+    for (std::size_t i = 0; i < dim; ++i) accel.push_back(GiNaC::symbol("a" + std::to_string(i)));
+    data_values dv = d;
+    if (P.is_vector) {
+        for (std::size_t m = 0; m < M; ++m)
+            dv.vectors[P.unknowns[m]] = vector_literal(sys.state[3 * m], sys.state[3 * m + 1], sys.state[3 * m + 2]);
+        dv.vectors[P.unknowns[M]] = vector_literal(accel[0], accel[1], accel[2]);
+    } else {
+        for (std::size_t m = 0; m < M; ++m) dv.scalars[P.unknowns[m]] = sys.state[m];
+        dv.scalars[P.unknowns[M]] = accel[0];
+    }
+    const ex E = put_values(P.expression, dv);
+    GiNaC::lst eqs, unk;
+    for (const ex& x : components(E)) eqs.append(GiNaC::expand(x) == 0);
+    for (const ex& x : accel) unk.append(x);
+    const ex sol = GiNaC::lsolve(eqs, unk);
+    if (sol.nops() != dim)
+        throw domain_error(b.name + ": the equation cannot be solved for " + P.unknown_name(M) +
+                           " at these values (its leading coefficient is singular)");
+    for (std::size_t i = dim; i < M * dim; ++i) sys.rhs.push_back(sys.state[i]);
+    for (std::size_t i = 0; i < dim; ++i) sys.rhs.push_back(sol.op(i).rhs());
+    for (std::size_t m = 0; m < M; ++m) {
+        const ex x0 = P.is_vector && P.initial[m].is_zero() ? vector_literal(0, 0, 0) : P.initial[m];
+        for (const ex& x : components(put_values_limit(x0, d)))
+            sys.initial.push_back(to_double(x, b, "the initial value of " + P.unknown_name(m)));
+    }
+    return sys;
 }
 
 }  // namespace symrep::lang

@@ -213,14 +213,12 @@ operator_form reduce(const cauchy_problem& P) {
     return out;
 }
 
-ex solve(const cauchy_problem& P) {
-    const operator_form F = P.reduced ? *P.reduced : reduce(P);
-    const rotation_operator_algebra R(F.Omega);
-    const operator_solution S = solve(F.ode, R, P.t);
+ex vector_solution(const cauchy_problem& P, const operator_form& F, const operator_solution& S) {
     std::map<std::string, ex> data(F.data.begin(), F.data.end());
+    const bool omega_symbol = GiNaC::is_a<GiNaC::symbol>(F.Omega);
     const ex norm_w = F.axis.is_zero() ? ex(0) : norm(F.axis);
     auto back = [&](const ex& c) {
-        return positive_trig_arguments(normalize_trig_signs(F.axis.is_zero() ? c : c.subs(F.Omega == norm_w)), P.t);
+        return positive_trig_arguments(normalize_trig_signs(omega_symbol ? c.subs(F.Omega == norm_w) : c), P.t);
     };
     ex x = 0;
     for (const placeholder_coefficients& pc : S.terms) {
@@ -235,6 +233,12 @@ ex solve(const cauchy_problem& P) {
         x += c0 * v + c1 * cross(F.axis, v) + c2 * cross(F.axis, cross(F.axis, v));
     }
     return x;
+}
+
+ex solve(const cauchy_problem& P) {
+    const operator_form F = P.reduced ? *P.reduced : reduce(P);
+    const rotation_operator_algebra R(F.Omega);
+    return vector_solution(P, F, solve(F.ode, R, P.t));
 }
 
 solution_check check(const cauchy_problem& P, const ex& s) {

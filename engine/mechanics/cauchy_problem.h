@@ -68,6 +68,11 @@ operator_form reduce(const cauchy_problem& P);
 /// coefficient).
 GiNaC::ex solve(const cauchy_problem& P);
 
+/// x = sum_P c_0(t) P + c_1(t) w x P + c_2(t) w x (w x P) over the placeholders
+/// of S (VI.1.21-22, 28, 31), with F's data vectors for the names and |w| for
+/// F.Omega when that is a symbol. Used by solve() and by the scene solver.
+GiNaC::ex vector_solution(const cauchy_problem& P, const operator_form& F, const operator_solution& S);
+
 /// Result of substituting a candidate solution into the problem.
 struct solution_check {
     GiNaC::ex residual;                   ///< E(s, s', ...), simplified

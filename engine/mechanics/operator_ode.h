@@ -42,6 +42,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,19 @@ quasi_polynomial impulse_response(const std::vector<cex>& a, const GiNaC::ex& t)
 operator_solution solve(const operator_ode& ode, const rotation_operator_algebra& R,
                         const GiNaC::ex& t);
 
+/// Per placeholder name, the factors of the local minimal polynomial of K on its
+/// data vector (rotation_operator_algebra.h); a name not listed needs both.
+using placeholder_factors = std::map<std::string, cyclic_factors>;
+
+/// solve() in the smallest algebra each placeholder needs (II.1.23-24): a
+/// placeholder P gets its coefficients in R[X]/(m_P) (c_k = 0 for k >= deg m_P),
+/// only the scalar problems (axial, planar) some placeholder needs are solved,
+/// and a placeholder with m_P = 1 gets no entry. The leading coefficient is
+/// checked in the whole algebra as by solve(). The result equals solve()'s on
+/// every data vector whose local minimal polynomial divides m_P.
+operator_solution solve(const operator_ode& ode, const rotation_operator_algebra& R, const GiNaC::ex& t,
+                        const placeholder_factors& factors);
+
 /// Independent exact check: substitutes the solution back (GiNaC derivatives of the
 /// coefficient expressions, products by A_m(K) in the algebra, K^3 = -Omega^2 K)
 /// and tests that the residual vanishes identically and the initial data hold.
@@ -122,5 +136,10 @@ struct verification {
 };
 verification verify(const operator_ode& ode, const rotation_operator_algebra& R,
                     const operator_solution& sol);
+/// The same check modulo each placeholder's local minimal polynomial (for a
+/// solution of the solve() above): residual and initial differences vanish in
+/// R[X]/(m_P). A placeholder with m_P = 1 is not checked.
+verification verify(const operator_ode& ode, const rotation_operator_algebra& R,
+                    const operator_solution& sol, const placeholder_factors& factors);
 
 }  // namespace symrep::mechanics

@@ -75,6 +75,23 @@ std::array<quasi_polynomial, 3> rotation_operator_algebra::recombine(const quasi
     return {axial, (1 / Omega_) * planar.imag(), (1 / (Omega_ * Omega_)) * (axial - planar.real())};
 }
 
+// II.1.23-24: G(K) P only needs G modulo the local minimal polynomial m of P.
+std::array<quasi_polynomial, 3> rotation_operator_algebra::recombine(const quasi_polynomial& axial,
+                                                                      const quasi_polynomial& planar,
+                                                                      cyclic_factors m) const {
+    const quasi_polynomial zero = quasi_polynomial::constant(0, axial.is_zero() ? planar.variable() : axial.variable());
+    if (m.axial && !m.planar) return {axial, zero, zero};
+    if (!m.axial && !m.planar) return {zero, zero, zero};
+    require_split("recombine modulo X^2 + Omega^2");
+    if (!m.axial) return {planar.real(), (1 / Omega_) * planar.imag(), zero};
+    return recombine(axial, planar);
+}
+
+ex rotation_operator_algebra::minimal_polynomial(cyclic_factors m) const {
+    if (degenerate_ && !(m.axial && !m.planar) && (m.axial || m.planar)) m = {true, true};
+    return (m.axial ? ex(X_) : ex(1)) * (m.planar ? GiNaC::pow(X_, 2) + Omega_ * Omega_ : ex(1));
+}
+
 std::array<quasi_polynomial, 3> rotation_operator_algebra::projector_form(
     const std::array<quasi_polynomial, 3>& c) const {
     require_split("projector_form");

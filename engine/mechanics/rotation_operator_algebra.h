@@ -28,6 +28,18 @@
 
 namespace symrep::mechanics {
 
+/// A divisor m of X^3 + Omega^2 X = X (X^2 + Omega^2), given by the factors it
+/// holds: the local minimal polynomial of K on the cyclic subspace
+/// span{P, K P, K^2 P} of a vector P (Corollary II.1.1, II.1.23-24; IV.3.2 b).
+/// X alone when K P = 0 (P along w), X^2 + Omega^2 alone when w . P = 0, both
+/// for a general P, neither (m = 1) for P = 0. G(K) P depends on G only modulo
+/// m, i.e. on the components of G that m keeps.
+struct cyclic_factors {
+    bool axial = true;   ///< X | m: the component K -> 0 is needed
+    bool planar = true;  ///< (X^2 + Omega^2) | m: the component K -> i Omega is needed
+    bool operator==(const cyclic_factors&) const = default;
+};
+
 class rotation_operator_algebra {
 public:
     /// Omega = |w|: a positive expression (GiNaC::possymbol, a positive number, a
@@ -71,6 +83,25 @@ public:
     /// c0, c1, c2 from the axial (real) and planar (complex) solutions.
     std::array<quasi_polynomial, 3> recombine(const quasi_polynomial& axial,
                                               const quasi_polynomial& planar) const;
+    /// The same in the smaller algebra R[X]/(m), m given by its factors: the
+    /// representative of degree < deg m (Chinese remainder theorem on
+    /// X (X^2 + Omega^2)): (axial, 0, 0) for m = X, (Re planar, Im planar / Omega, 0)
+    /// for m = X^2 + Omega^2, recombine(axial, planar) for both, 0 for m = 1.
+    /// In the degenerate algebra only m = X (axial alone) is smaller than X^3.
+    std::array<quasi_polynomial, 3> recombine(const quasi_polynomial& axial, const quasi_polynomial& planar,
+                                              cyclic_factors m) const;
+    /// m as a polynomial in variable(): 1, X, X^2 + Omega^2 or X^3 + Omega^2 X.
+    GiNaC::ex minimal_polynomial(cyclic_factors m) const;
+    /// True when the element a0 + a1 K + a2 K^2 is 0 modulo m (its components that
+    /// m keeps vanish), each a_k an exact function of t tested by `zero`.
+    template <class ZeroTest>
+    bool vanishes_modulo(const coeffs& a, cyclic_factors m, ZeroTest zero) const {
+        if (degenerate_ && !(m.axial && !m.planar)) m = {true, true};
+        if (m.axial && m.planar) return zero(a[0]) && zero(a[1]) && zero(a[2]);
+        if (m.axial) return zero(a[0]);
+        if (m.planar) return zero(a[0] - Omega_ * Omega_ * a[2]) && zero(a[1]);
+        return true;
+    }
     /// Projector form of c0 + c1 K + c2 K^2 = a P0 + b K + c P1 (Thm VI.1.3.3.1,
     /// VI.1.81): a = c0, b = c1, c = c0 - Omega^2 c2. In vector terms
     /// P0 x = (w.x) w / |w|^2 and P1 x = -w x (w x x) / |w|^2. Not when degenerate().

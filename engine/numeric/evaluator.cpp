@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "io/error.h"
+#include "numeric/reference.h"
 
 namespace symrep::num {
 
@@ -131,6 +132,10 @@ public:
         compiled_function f;
         f.n_inputs_ = inputs_.size();
         f.constants_ = constants_;
+        f.constant_sources_ = constant_sources_;
+        for (std::size_t k = 0; k < constant_known_.size(); ++k)
+            if (!constant_known_[k]) f.constant_sources_[k] = GiNaC::ex();
+        f.constant_known_ = constant_known_;
         const auto n_in = static_cast<std::uint32_t>(inputs_.size());
         const auto n_const = static_cast<std::uint32_t>(constants_.size());
         auto place = [&](std::uint32_t r) -> std::uint32_t {
@@ -186,16 +191,28 @@ private:
     std::map<std::uint64_t, std::uint32_t> constant_reg_;  // by bit pattern
     std::map<std::tuple<opcode, std::uint32_t, std::uint32_t>, std::uint32_t> value_numbers_;
     std::vector<double> constants_;
+    std::vector<GiNaC::ex> constant_sources_;
+    std::vector<char> constant_known_;
     std::vector<instruction> program_;
     std::uint32_t n_temps_ = 0;
 
-    std::uint32_t constant(double v) {
+    /// The register of constant v, the double nearest the exact `source`. The
+    /// source is kept for evaluation in higher precision (stable_function); two
+    /// different sources with one double value are recorded as known to double
+    /// precision only.
+    std::uint32_t constant(double v, const GiNaC::ex& source) {
         std::uint64_t bits;
         std::memcpy(&bits, &v, sizeof bits);
         auto it = constant_reg_.find(bits);
-        if (it != constant_reg_.end()) return it->second;
+        if (it != constant_reg_.end()) {
+            const std::size_t k = it->second & index_mask;
+            if (!source.is_equal(constant_sources_[k])) constant_known_[k] = 0;
+            return it->second;
+        }
         auto r = const_tag | static_cast<std::uint32_t>(constants_.size());
         constants_.push_back(v);
+        constant_sources_.push_back(source);
+        constant_known_.push_back(1);
         constant_reg_.emplace(bits, r);
         return r;
     }
@@ -254,7 +271,7 @@ private:
             throw type_error("cannot evaluate numerically: symbol '" + ex_to<symbol>(e).get_name() +
                              "' has no value (inputs: " + (names.empty() ? "none" : names) + ")");
         }
-        if (is_a<GiNaC::numeric>(e)) return constant(real_value(ex_to<GiNaC::numeric>(e), e));
+        if (is_a<GiNaC::numeric>(e)) return constant(real_value(ex_to<GiNaC::numeric>(e), e), e);
         if (is_a<lst>(e) || is_a<matrix>(e))
             throw type_error("cannot compile a list or matrix inside a scalar output: " + bounded(e));
         if (is_a<relational>(e))
@@ -267,7 +284,7 @@ private:
             } catch (const std::exception&) {
                 v = e;
             }
-            if (is_a<GiNaC::numeric>(v)) return constant(real_value(ex_to<GiNaC::numeric>(v), e));
+            if (is_a<GiNaC::numeric>(v)) return constant(real_value(ex_to<GiNaC::numeric>(v), e), e);
             // No numeric value (e.g. an unsupported function): compile structurally,
             // which names what is not supported.
         }
@@ -302,11 +319,13 @@ private:
         bool have = false;
         std::vector<std::uint32_t> negatives;
         // Symbol-free terms fold into one constant.
+        // (Summed exactly: GiNaC would round a sum of floats to Digits at once,
+        // and the constant's exact value is kept for stable_function.)
         GiNaC::ex csum = 0;
         std::vector<GiNaC::ex> terms;
         for (std::size_t i = 0; i < e.nops(); ++i) {
             if (is_constant(e.op(i)))
-                csum += e.op(i);
+                csum += exact_floats_of(e.op(i));
             else
                 terms.push_back(e.op(i));
         }
@@ -333,12 +352,13 @@ private:
         std::uint32_t num = 0, den = 0;
         bool have_num = false, have_den = false, negate = false;
         // Symbol-free factors (numeric coefficient, Pi, sqrt(2), ...) fold into one constant.
+        // (Multiplied exactly, as the constant terms of a sum.)
         std::vector<ex> rest, cfactors;
         ex cprod = 1;
         for (std::size_t i = 0; i < e.nops(); ++i) {
             if (is_constant(e.op(i))) {
                 cfactors.push_back(e.op(i));
-                cprod *= e.op(i);
+                cprod *= exact_floats_of(e.op(i));
             } else {
                 rest.push_back(e.op(i));
             }
@@ -355,7 +375,7 @@ private:
                 if (c == -1.0) {
                     negate = true;
                 } else if (c != 1.0) {
-                    num = constant(c);
+                    num = constant(c, cprod);
                     have_num = true;
                 }
             } else {
@@ -377,9 +397,9 @@ private:
         }
         std::uint32_t res;
         if (have_den)
-            res = emit(opcode::div, have_num ? num : constant(1.0), den);
+            res = emit(opcode::div, have_num ? num : constant(1.0, 1), den);
         else
-            res = have_num ? num : constant(1.0);
+            res = have_num ? num : constant(1.0, 1);
         return negate ? emit(opcode::neg, res) : res;
     }
 
@@ -389,11 +409,11 @@ private:
         if (is_a<GiNaC::numeric>(x) && ex_to<GiNaC::numeric>(x).is_real()) {
             const GiNaC::numeric& n = ex_to<GiNaC::numeric>(x);
             if (n.is_integer()) {
-                if (n.is_zero()) return constant(1.0);
+                if (n.is_zero()) return constant(1.0, 1);
                 const GiNaC::numeric m = abs(n);
                 if (m <= 1024) {
                     std::uint32_t r = powi(node(b), static_cast<unsigned long>(m.to_long()));
-                    return n.is_negative() ? emit(opcode::div, constant(1.0), r) : r;
+                    return n.is_negative() ? emit(opcode::div, constant(1.0, 1), r) : r;
                 }
             } else if (n.denom() == 2) {
                 // b^(p/2) = sqrt(b)^p
@@ -401,10 +421,10 @@ private:
                 if (p <= 1024) {
                     std::uint32_t s = emit(opcode::sqrt, node(b));
                     std::uint32_t r = powi(s, static_cast<unsigned long>(p.to_long()));
-                    return n.is_negative() ? emit(opcode::div, constant(1.0), r) : r;
+                    return n.is_negative() ? emit(opcode::div, constant(1.0, 1), r) : r;
                 }
             }
-            return emit(opcode::pow, node(b), constant(n.to_double()));
+            return emit(opcode::pow, node(b), constant(n.to_double(), n));
         }
         return emit(opcode::pow, node(b), node(x));
     }

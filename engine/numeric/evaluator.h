@@ -123,9 +123,15 @@ public:
 
 private:
     friend class program_builder;
+    friend class stable_function;
     std::size_t n_inputs_ = 0;
     std::size_t n_registers_ = 0;
     std::vector<double> constants_;        // copied to registers [n_inputs, n_inputs + size)
+    // What each constant is the double of: an exact expression (an empty ex: the
+    // double itself is exact), unless constant_known_ is 0 (two different values
+    // rounded to this double; known to double precision only).
+    std::vector<GiNaC::ex> constant_sources_;
+    std::vector<char> constant_known_;
     std::vector<instruction> program_;
     std::vector<std::uint32_t> outputs_;   // register of each output
 

@@ -20,6 +20,7 @@ const char* stepper_name(stepper_kind k) {
         case stepper_kind::rkf78: return "rkf78";
         case stepper_kind::bulirsch_stoer: return "bulirsch_stoer";
         case stepper_kind::dopri5: return "dopri5";
+        case stepper_kind::rk4: return "rk4";
     }
     return "?";
 }
@@ -28,7 +29,8 @@ stepper_kind stepper_from_name(const std::string& name) {
     if (name == "rkf78" || name == "rk78") return stepper_kind::rkf78;
     if (name == "bulirsch_stoer" || name == "bs") return stepper_kind::bulirsch_stoer;
     if (name == "dopri5") return stepper_kind::dopri5;
-    throw type_error("unknown integrator '" + name + "' (known: rkf78, bulirsch_stoer, dopri5)");
+    if (name == "rk4") return stepper_kind::rk4;
+    throw type_error("unknown integrator '" + name + "' (known: rkf78, bulirsch_stoer, dopri5, rk4)");
 }
 
 std::vector<double> linspace(double t0, double t1, std::size_t n_points) {
@@ -61,6 +63,8 @@ void check_arguments(double t0, std::size_t dim, const std::vector<double>& time
     if (!(o.abs_tol > 0) || !(o.rel_tol >= 0) || !std::isfinite(o.abs_tol) || !std::isfinite(o.rel_tol))
         throw type_error("integrate: tolerances must be finite, abs_tol > 0 and rel_tol >= 0");
     if (o.max_steps_between_outputs == 0) throw type_error("integrate: max_steps_between_outputs must be positive");
+    if (o.stepper == stepper_kind::rk4 && !(o.fixed_step > 0 && std::isfinite(o.fixed_step)))
+        throw type_error("integrate: the fixed-step stepper rk4 needs a step (fixed_step > 0)");
 }
 
 }  // namespace
@@ -135,6 +139,12 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
                                                          odeint::runge_kutta_dopri5<state_type>());
                 res.steps = odeint::integrate_times(stepper, system, y, all.begin(), all.end(), dt, observer,
                                                     odeint::max_step_checker(max_steps));
+                break;
+            }
+            case stepper_kind::rk4: {
+                odeint::runge_kutta4<state_type> stepper;
+                res.steps = odeint::integrate_times(stepper, system, y, all.begin(), all.end(), options.fixed_step,
+                                                    observer, odeint::max_step_checker(max_steps));
                 break;
             }
         }

@@ -5,12 +5,16 @@
 // steppers hit every output time exactly, or interpolate with dense output),
 // how many times F was evaluated, how many steps were taken, and the wall time.
 //
-// Steppers (all adaptive, with absolute and relative tolerances, odeint's error
+// Steppers (adaptive, with absolute and relative tolerances, odeint's error
 // norm  max_i |err_i| / (abs_tol + rel_tol |y_i|)  per step):
 //   - rkf78:          controlled runge_kutta_fehlberg78 (order 7/8, 13 stages),
 //   - bulirsch_stoer: odeint's bulirsch_stoer (extrapolation, variable order),
 //   - dopri5:         dense-output runge_kutta_dopri5 (order 5/4 with FSAL,
-//                     output times by 4th-order continuous interpolation).
+//                     output times by 4th-order continuous interpolation);
+// and one with a fixed step and no error control (the tolerances are ignored):
+//   - rk4:            the classical runge_kutta4 (order 4, 4 stages) with step
+//                     integration_options::fixed_step, shortened where needed
+//                     to land on each output time.
 // The tolerances bound the local error per step; the global error at time t is
 // roughly the tolerance times the growth of perturbations (the norm of the
 // propagator) times the number of steps, so for a stable or oscillating system
@@ -36,9 +40,9 @@ namespace symrep::num {
 /// Right-hand side: write F(t, y) to dydt (both arrays have the system's dimension).
 using rhs_function = std::function<void(double t, const double* y, double* dydt)>;
 
-enum class stepper_kind { rkf78, bulirsch_stoer, dopri5 };
+enum class stepper_kind { rkf78, bulirsch_stoer, dopri5, rk4 };
 
-/// "rkf78", "bulirsch_stoer", "dopri5".
+/// "rkf78", "bulirsch_stoer", "dopri5", "rk4".
 const char* stepper_name(stepper_kind k);
 /// Inverse of stepper_name (also accepts "bs", "rk78"); symrep::type_error on an unknown name.
 stepper_kind stepper_from_name(const std::string& name);
@@ -49,6 +53,8 @@ struct integration_options {
     double rel_tol = 1e-10;
     /// First trial step; the controllers adapt it at once. 0: 1e-3 times the span.
     double initial_step = 0.0;
+    /// The step of rk4 (required, > 0, for rk4; unused by the adaptive steppers).
+    double fixed_step = 0.0;
     /// Error (symrep::error) when more steps than this are needed between two
     /// consecutive output times (guards against stiff or singular systems).
     std::size_t max_steps_between_outputs = 1'000'000;

@@ -15,15 +15,16 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point s) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count();
 }
-}  // namespace
 
-verify_result verify(const compiled_function& closed_form, const rhs_function& rhs,
-                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
-                     const integration_options& options) {
-    if (closed_form.n_inputs() != 1)
+/// The comparison, for any evaluator of the closed form: eval_all(times, n,
+/// values) fills n rows of m values.
+template <class EvalAll>
+verify_result compare(std::size_t n_inputs, std::size_t m, EvalAll eval_all, const rhs_function& rhs,
+                      const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                      const integration_options& options) {
+    if (n_inputs != 1)
         throw type_error("verify: the closed form must be a function of t alone (it takes " +
-                         std::to_string(closed_form.n_inputs()) + " inputs)");
-    const std::size_t m = closed_form.n_outputs();
+                         std::to_string(n_inputs) + " inputs)");
     if (m == 0) throw type_error("verify: the closed form has no components");
     if (m > initial_state.size())
         throw type_error("verify: the closed form has " + std::to_string(m) + " components but the state only " +
@@ -40,7 +41,7 @@ verify_result verify(const compiled_function& closed_form, const rhs_function& r
     res.closed_form.resize(static_cast<Eigen::Index>(n_points), static_cast<Eigen::Index>(m));
     // Row-major block of n_points x m values, then into the (column-major) matrix.
     std::vector<double> values(n_points * m);
-    closed_form.eval_many(res.times.data(), values.data(), n_points);
+    eval_all(res, values.data());
     for (std::size_t k = 0; k < n_points; ++k)
         for (std::size_t i = 0; i < m; ++i)
             res.closed_form(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = values[k * m + i];
@@ -87,6 +88,30 @@ verify_result verify(const compiled_function& closed_form, const rhs_function& r
     return res;
 }
 
+}  // namespace
+
+verify_result verify(const compiled_function& closed_form, const rhs_function& rhs,
+                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                     const integration_options& options) {
+    auto all = [&](verify_result& res, double* values) {
+        closed_form.eval_many(res.times.data(), values, res.times.size());
+    };
+    return compare(closed_form.n_inputs(), closed_form.n_outputs(), all, rhs, initial_state, t0, t1, n_points,
+                   options);
+}
+
+verify_result verify(const stable_function& closed_form, const rhs_function& rhs,
+                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                     const integration_options& options) {
+    auto all = [&](verify_result& res, double* values) {
+        const std::size_t m = closed_form.n_outputs();
+        for (std::size_t k = 0; k < res.times.size(); ++k)
+            ++res.closed_form_tiers[static_cast<std::size_t>(closed_form.eval(&res.times[k], values + k * m))];
+    };
+    return compare(closed_form.n_inputs(), closed_form.n_outputs(), all, rhs, initial_state, t0, t1, n_points,
+                   options);
+}
+
 verify_result verify(const std::vector<GiNaC::ex>& closed_form, const GiNaC::symbol& t,
                      const std::vector<GiNaC::ex>& ode_rhs, const std::vector<GiNaC::ex>& state,
                      const std::vector<double>& initial_state, const parameter_values& params, double t0,
@@ -99,7 +124,7 @@ verify_result verify(const std::vector<GiNaC::ex>& closed_form, const GiNaC::sym
     std::vector<GiNaC::ex> cf;
     cf.reserve(closed_form.size());
     for (const auto& e : closed_form) cf.push_back(e.subs(values));
-    compiled_function f = compile(cf, {t});
+    const stable_function f(cf, {t});
     symbolic_system sys(ode_rhs, t, state, params);
     const double compile_seconds = seconds_since(s);
 

@@ -15,6 +15,7 @@
 // gives O(1).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -22,6 +23,7 @@
 
 #include "numeric/evaluator.h"
 #include "numeric/integrate.h"
+#include "numeric/stable_evaluator.h"
 
 namespace symrep::num {
 
@@ -33,6 +35,9 @@ struct verify_result {
     std::size_t n_points = 0;
     double compile_seconds = 0.0;          ///< compiling closed form and right-hand sides
     double closed_form_seconds = 0.0;      ///< evaluating the compiled closed form at all samples
+    /// With a stable_function: how many samples each precision tier evaluated
+    /// (binary64, binary128, multiprecision; see stable_evaluator.h).
+    std::array<std::size_t, 3> closed_form_tiers{};
     double integration_seconds = 0.0;      ///< odeint, all samples
     std::size_t rhs_evaluations = 0;
     std::size_t steps = 0;
@@ -59,6 +64,12 @@ verify_result verify(const std::vector<GiNaC::ex>& closed_form, const GiNaC::sym
                      double t1, std::size_t n_points, const integration_options& options = {});
 
 /// Numeric back end: closed_form is a function of the single input t with m outputs.
+/// The symbolic front end uses a stable_function, so that the difference
+/// measures the integrator and not the rounding of the closed form (at the
+/// Earth's rotation rate the solver's form cancels by 1e8 in double).
+verify_result verify(const stable_function& closed_form, const rhs_function& rhs,
+                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                     const integration_options& options = {});
 verify_result verify(const compiled_function& closed_form, const rhs_function& rhs,
                      const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
                      const integration_options& options = {});

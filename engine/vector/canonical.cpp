@@ -35,7 +35,7 @@ namespace {
 
 std::string atom_key(const ex& a) {
     if (is_vector_symbol(a)) return "0" + name_of(a);
-    return "1" + to_string(a);
+    return "1" + to_string(a, notation::ascii);  // a sort key: the same in both notations
 }
 
 // A vector monomial: an atom (b empty) or a x b with key(a) < key(b).

@@ -6,6 +6,11 @@
 // ordered by their vector monomial and then by text, products by text with the
 // vector factor last. Terms of a vector sum with the same vector monomial are
 // printed together: (a + b)*w.
+//
+// The cross and dot products are written `a x b`, `a . b` or, in the unicode
+// notation, `a × b`, `a · b`. Every comparison of printed texts below goes
+// through text_less, which reads the two Unicode signs as their ASCII letters,
+// so both notations put terms and factors in the same order.
 #include <algorithm>
 #include <sstream>
 
@@ -20,6 +25,42 @@ using GiNaC::ex_to;
 using namespace detail;
 
 namespace {
+
+notation g_notation = notation::ascii;  ///< vector_notation()
+notation g_current = notation::ascii;   ///< of the to_string call running
+
+const char* const cross_utf8 = "\xC3\x97";  // U+00D7 MULTIPLICATION SIGN
+const char* const dot_utf8 = "\xC2\xB7";    // U+00B7 MIDDLE DOT
+
+std::string cross_sign() { return g_current == notation::unicode ? std::string(" ") + cross_utf8 + " " : " x "; }
+std::string dot_sign() { return g_current == notation::unicode ? std::string(" ") + dot_utf8 + " " : " . "; }
+
+// The ASCII text of a text printed in the unicode notation.
+std::string ascii_text(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s.compare(i, 2, cross_utf8) == 0) {
+            out += 'x';
+            ++i;
+        } else if (s.compare(i, 2, dot_utf8) == 0) {
+            out += '.';
+            ++i;
+        } else {
+            out += s[i];
+        }
+    }
+    return out;
+}
+
+// The order of printed texts: that of their ASCII notation.
+bool text_less(const std::string& a, const std::string& b) {
+    if (g_current == notation::ascii) return a < b;
+    return ascii_text(a) < ascii_text(b);
+}
+struct text_order {
+    bool operator()(const std::string& a, const std::string& b) const { return text_less(a, b); }
+};
 
 std::string str(const ex& e);
 
@@ -38,8 +79,8 @@ bool is_simple(const ex& e) {
         const auto& n = ex_to<GiNaC::numeric>(e);
         return n.is_integer() && !n.is_negative();
     }
-    if (is_norm_sq(e) || is_triple(e)) return true;
-    if (is_a<GiNaC::function>(e)) return !is_cross(e) && !is_dot(e);
+    if (is_norm_sq(e)) return true;
+    if (is_a<GiNaC::function>(e)) return !is_cross(e) && !is_dot(e) && !is_triple(e);
     if (is_a<GiNaC::power>(e))
         return !(is_a<GiNaC::numeric>(e.op(1)) && ex_to<GiNaC::numeric>(e.op(1)).is_negative());
     return false;
@@ -107,8 +148,8 @@ std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& f
             num.push_back(factor_text(f));
         }
     }
-    std::sort(num.begin(), num.end());
-    std::sort(den.begin(), den.end());
+    std::sort(num.begin(), num.end(), text_less);
+    std::sort(den.begin(), den.end(), text_less);
     if (!vec.empty()) num.push_back(vec);
     const GiNaC::numeric p = coef.numer(), q = coef.denom();
     std::string sign;
@@ -159,7 +200,7 @@ std::string mul_text(const ex& e) {
 
 // A term of a sum: a bare cross or dot product gets parentheses, (a . b) + c.
 std::string term_text(const ex& t) {
-    return (is_cross(t) || (is_dot(t) && !is_norm_sq(t))) ? "(" + str(t) + ")" : str(t);
+    return (is_cross(t) || is_triple(t) || (is_dot(t) && !is_norm_sq(t))) ? "(" + str(t) + ")" : str(t);
 }
 
 // The printed terms of a sum, in the fixed order: vector terms grouped by
@@ -170,7 +211,7 @@ std::vector<std::string> add_terms(const ex& e) {
         std::string text;  // the monomial, printed once
         ex coef;
     };
-    std::map<std::string, group> groups;
+    std::map<std::string, group, text_order> groups;
     std::vector<std::string> scalars;
     for (std::size_t i = 0; i < e.nops(); ++i) {
         const ex t = e.op(i);
@@ -188,7 +229,7 @@ std::vector<std::string> add_terms(const ex& e) {
     for (auto& [k, g] : groups) {
         const ex& c = g.coef;
         if (c.is_zero()) continue;
-        const bool bare_product = is_cross(g.mon) || (is_dot(g.mon) && !is_norm_sq(g.mon));
+        const bool bare_product = is_cross(g.mon) || is_triple(g.mon) || (is_dot(g.mon) && !is_norm_sq(g.mon));
         const std::string vt = is_simple(g.mon) ? g.text : "(" + g.text + ")";
         if (c.is_equal(1)) {
             terms.push_back(bare_product ? "(" + g.text + ")" : g.text);
@@ -204,7 +245,7 @@ std::vector<std::string> add_terms(const ex& e) {
     std::sort(scalars.begin(), scalars.end(), [](const std::string& a, const std::string& b) {
         const std::string x = a.rfind("-", 0) == 0 ? a.substr(1) : a;
         const std::string y = b.rfind("-", 0) == 0 ? b.substr(1) : b;
-        return x != y ? x < y : a < b;
+        return x != y ? text_less(x, y) : text_less(a, b);
     });
     terms.insert(terms.end(), scalars.begin(), scalars.end());
     return terms;
@@ -237,10 +278,12 @@ std::string str(const ex& e) {
             return product_text(1, {e});
         return power_text(e.op(0), e.op(1));
     }
-    if (is_cross(e)) return factor_text(e.op(0)) + " x " + factor_text(e.op(1));
+    if (is_cross(e)) return factor_text(e.op(0)) + cross_sign() + factor_text(e.op(1));
     if (is_norm_sq(e)) return operand_norm(e.op(0)) + "^2";
-    if (is_dot(e)) return factor_text(e.op(0)) + " . " + factor_text(e.op(1));
-    if (is_triple(e)) return "[" + str(e.op(0)) + ", " + str(e.op(1)) + ", " + str(e.op(2)) + "]";
+    if (is_dot(e)) return factor_text(e.op(0)) + dot_sign() + factor_text(e.op(1));
+    // [a, b, c] = a . (b x c), printed so that it reads back (a list [a, b, c] would not)
+    if (is_triple(e))
+        return factor_text(e.op(0)) + dot_sign() + "(" + factor_text(e.op(1)) + cross_sign() + factor_text(e.op(2)) + ")";
     if (is_a<GiNaC::function>(e)) {
         std::string s = ex_to<GiNaC::function>(e).get_name() + "(";
         for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + str(e.op(i));
@@ -251,9 +294,23 @@ std::string str(const ex& e) {
 
 }  // namespace
 
-std::string to_string(const ex& e) {
+notation vector_notation() { return g_notation; }
+void set_vector_notation(notation n) { g_notation = n; }
+
+std::string to_string(const ex& e) { return to_string(e, g_notation); }
+
+std::string to_string(const ex& e, notation n) {
     kind(e);  // reject ill-formed expressions with a typed error
-    return str(e);
+    const notation saved = g_current;
+    g_current = n;
+    try {
+        std::string s = str(e);
+        g_current = saved;
+        return s;
+    } catch (...) {
+        g_current = saved;
+        throw;
+    }
 }
 
 }  // namespace symrep

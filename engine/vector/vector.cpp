@@ -250,6 +250,11 @@ using namespace detail;
 // -------------------------------------------------------------- eval rules
 namespace {
 
+// 0 or the literal [0, 0, 0] (the derivative of a constant literal, say).
+bool zero_vector(const ex& a) {
+    return a.is_zero() || (is_vector_literal(a) && a.op(0).is_zero() && a.op(1).is_zero() && a.op(2).is_zero());
+}
+
 void check_arg(const char* op, int pos, const ex& a) {
     if (a.is_zero()) return;
     if (!kind(a))
@@ -260,7 +265,7 @@ void check_arg(const char* op, int pos, const ex& a) {
 ex vcross_eval(const ex& a, const ex& b) {
     check_arg("cross", 1, a);
     check_arg("cross", 2, b);
-    if (a.is_zero() || b.is_zero()) return 0;
+    if (zero_vector(a) || zero_vector(b)) return 0;
     if (is_a<GiNaC::add>(a)) {
         ex s = 0;
         for (std::size_t i = 0; i < a.nops(); ++i) s += vcross(a.op(i), b);
@@ -283,7 +288,7 @@ ex vcross_eval(const ex& a, const ex& b) {
 ex vdot_eval(const ex& a, const ex& b) {
     check_arg("dot", 1, a);
     check_arg("dot", 2, b);
-    if (a.is_zero() || b.is_zero()) return 0;
+    if (zero_vector(a) || zero_vector(b)) return 0;
     if (is_a<GiNaC::add>(a)) {
         ex s = 0;
         for (std::size_t i = 0; i < a.nops(); ++i) s += vdot(a.op(i), b);
@@ -311,7 +316,7 @@ ex vtriple_eval(const ex& a, const ex& b, const ex& c) {
     check_arg("triple", 1, a);
     check_arg("triple", 2, b);
     check_arg("triple", 3, c);
-    if (a.is_zero() || b.is_zero() || c.is_zero()) return 0;
+    if (zero_vector(a) || zero_vector(b) || zero_vector(c)) return 0;
     const ex args[3] = {a, b, c};
     for (int k = 0; k < 3; ++k)
         if (is_a<GiNaC::add>(args[k])) {
@@ -437,7 +442,7 @@ struct components {
         if (is_vector_symbol(e)) {
             auto it = m.find(e);
             if (it == m.end())
-                throw type_error("subs_components: no components given for the vector " + name_of(e));
+                throw type_error("no value given for the vector " + name_of(e) + " (give it as " + name_of(e) + " = [x, y, z])");
             const ex& v = it->second;
             if (!vector_symbols(v).empty())
                 throw type_error("subs_components: the value for " + name_of(e) +

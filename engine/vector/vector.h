@@ -12,7 +12,7 @@
 // * cross(a, b), dot(a, b) and the triple product [a, b, c] are GiNaC functions
 //   (printed by GiNaC as cross(a,b), dot(a,b), triple(a,b,c); use to_string()
 //   for the thesis notation). Their eval rules, run whenever GiNaC builds the
-//   expression, are cheap: zero argument -> 0, linearity over sums, scalar
+//   expression, are cheap: zero argument (0 or [0, 0, 0]) -> 0, linearity over sums, scalar
 //   factors pulled out, cross(a, a) = 0, dot(a, a x b) = 0, a fixed argument
 //   order for two vector symbols (by name: cross(b, a) -> -cross(a, b),
 //   dot(b, a) -> dot(a, b), triple sorted with the permutation sign, 0 on a
@@ -136,9 +136,23 @@ std::vector<vector_term> canonical_terms(const GiNaC::ex& e);
 /// test. Comparing a vector with a scalar other than 0 throws type_error.
 bool equal(const GiNaC::ex& a, const GiNaC::ex& b);
 
+/// How to_string writes the cross and the scalar product: `a x b`, `a . b`
+/// (ascii) or `a × b`, `a · b` (unicode: U+00D7 and U+00B7, UTF-8 encoded;
+/// the language reads both). The two texts differ only by these two signs:
+/// terms and factors come in the same order.
+enum class notation { ascii, unicode };
+/// The notation of to_string(e): process-wide like GiNaC::Digits, ascii at
+/// start (the symrep program sets it from --unicode/--ascii, the language by
+/// notation("unicode"); a lang::session restores it when destroyed).
+notation vector_notation();
+void set_vector_notation(notation n);
+
 /// Text in the thesis notation, deterministic (independent of GiNaC's term
 /// order and of symbol creation order): a x (b x c), a . b, |w|, |w|^2, [a, b, c],
-/// [1, 0, t] for a literal; products with '*', quotients with '/'.
+/// [1, 0, t] for a literal; products with '*', quotients with '/'. Cross and dot
+/// are written in vector_notation().
 std::string to_string(const GiNaC::ex& e);
+/// The same text in the given notation.
+std::string to_string(const GiNaC::ex& e, notation n);
 
 }  // namespace symrep

@@ -1,0 +1,352 @@
+// symrep/mechanics/scene.cpp -- the smallest exact model of a scene (scene.h).
+#include "mechanics/scene.h"
+
+#include <algorithm>
+#include <functional>
+
+#include "algebra/scalar.h"
+#include "io/error.h"
+#include "vector/vector.h"
+
+namespace symrep::mechanics {
+
+using GiNaC::ex;
+
+namespace {
+
+bool has_float(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_crational()) return true;
+    return false;
+}
+
+bool has_symbol(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
+    return false;
+}
+
+// |w| can stand in the algebra of K (rotation_operator_algebra): 0, or known positive.
+bool usable_as_omega(const ex& W) {
+    if (W.is_zero() || W.info(GiNaC::info_flags::positive)) return true;
+    if (has_symbol(W)) return false;
+    const ex x = GiNaC::evalf(W);
+    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real() &&
+           GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
+}
+
+bool is_zero_vector_or_scalar(const ex& x) {
+    if (x.is_zero()) return true;
+    return is_vector(x) ? equal(x, 0) : is_zero_scalar(x);
+}
+
+// e as an operand: in parentheses when its text has an operator (a literal has none)
+std::string paren(const ex& e) {
+    const std::string s = to_string(e);
+    return !is_vector_literal(e) && s.find(' ') != std::string::npos ? "(" + s + ")" : s;
+}
+
+// "w0^2 r'", "2 w x r'", "-q/m w x v": a term c K^j x^(m) of the equation.
+std::string term_text(const ex& c, unsigned j, const std::string& x, const ex& axis) {
+    const std::string w = axis.is_zero() ? std::string("K") : to_string(axis);
+    const std::string op = j == 0 ? x : j == 1 ? w + " x " + x : w + " x (" + w + " x " + x + ")";
+    if (c.is_equal(1)) return op;
+    if (c.is_equal(-1)) return "-" + op;
+    return paren(c) + " " + op;
+}
+
+std::string polynomial_text(const std::vector<cex>& a) {
+    std::string s;
+    for (std::size_t m = a.size(); m-- > 0;) {
+        const ex c = a[m].re + GiNaC::I * a[m].im;
+        if (c.is_zero()) continue;
+        const std::string mono = m == 0 ? "" : m == 1 ? "s" : "s^" + std::to_string(m);
+        std::string cs = GiNaC::is_a<GiNaC::add>(c) ? "(" + to_string(c) + ")" : to_string(c);
+        if (m > 0 && c.is_equal(1)) cs = "";
+        else if (m > 0 && c.is_equal(-1)) cs = "-";
+        else if (m > 0) cs += "*";
+        const std::string term = cs + mono;
+        if (s.empty()) s = term;
+        else if (term[0] == '-') s += " - " + term.substr(1);
+        else s += " + " + term;
+    }
+    return (s.empty() ? "0" : s) + " = 0";
+}
+
+std::string algebra_text(const rotation_operator_algebra& R, cyclic_factors m) {
+    const ex p = R.minimal_polynomial(m);
+    if (p.is_equal(1)) return "R[X]/(1) = {0}";
+    const ex W2 = R.omega() * R.omega();
+    const std::string w2 = W2.is_equal(1) ? "" : paren(W2) + " ";
+    std::string s;
+    if (m.axial && m.planar && !R.degenerate()) s = "X^3 + " + w2 + "X";
+    else if (m.planar && !R.degenerate()) s = "X^2 + " + to_string(W2);
+    else s = to_string(p);
+    return "R[X]/(" + s + ")";
+}
+
+}  // namespace
+
+ex put_values(const ex& e, const parameter_values& v) {
+    try {
+        ex x = v.vectors.empty() || vector_symbols(e).empty() ? e : subs_vectors(e, v.vectors);
+        if (vector_symbols(x).empty() && is_vector(x)) x = subs_components(x, {});  // one literal [x, y, z]
+        return v.scalars.empty() ? x : x.subs(v.scalars);
+    } catch (const error&) {
+        throw;
+    } catch (const std::exception& err) {
+        throw domain_error("the values make " + message_text(e) + " singular (" + err.what() + ")");
+    }
+}
+
+namespace {
+
+void check_value_names(const cauchy_problem& P, const parameter_values& v) {
+    // by name too: a script's symbol r is not the unknown r of ode(...), but a value for it is a mistake
+    auto refuse = [&](const ex& k) {
+        const std::string name = to_string(k);
+        if (k.is_equal(P.t) || name == to_string(P.t))
+            throw domain_error(name + " is the independent variable of the problem: it cannot be given a value");
+        for (std::size_t m = 0; m < P.unknowns.size(); ++m)
+            if (k.is_equal(P.unknowns[m]) || name == P.unknown_name(m))
+                throw domain_error(P.unknown_name(m) + " is the unknown of the problem: it cannot be given a value");
+    };
+    for (const auto& kv : v.vectors) refuse(kv.first);
+    for (const auto& kv : v.scalars) refuse(kv.first);
+}
+
+}  // namespace
+
+cauchy_problem with_values(const cauchy_problem& P, const parameter_values& v) {
+    check_value_names(P, v);
+    cauchy_problem Q = P;
+    Q.reduced = nullptr;
+    Q.expression = put_values(P.expression, v);
+    for (ex& x : Q.initial) x = put_values(x, v);
+    return Q;
+}
+
+placeholder_factors scene_model::factors() const {
+    placeholder_factors f;
+    for (const data_model& d : data) f[d.name] = d.factors;
+    return f;
+}
+
+scene_model classify(const cauchy_problem& P, const parameter_values& v) {
+    check_value_names(P, v);
+    const operator_form F = P.reduced ? *P.reduced : reduce(P);
+    scene_model out;
+    out.axis = F.axis;
+    out.form = F;
+    const std::size_t M = F.ode.A.size() - 1;
+
+    // the exact values go into the coefficients; |w| too when it is known positive (or 0)
+    parameter_values exact;
+    for (const auto& [k, x] : v.vectors)
+        if (!has_float(x)) exact.vectors.emplace(k, x);
+    for (const auto& [k, x] : v.scalars)
+        if (!has_float(x)) exact.scalars.emplace(k, x);
+    out.axis_value = F.axis.is_zero() ? ex(0) : put_values(F.axis, v);
+    out.axis_zero = !F.axis.is_zero() && is_zero_vector_or_scalar(out.axis_value);
+    const ex Omega_value = F.axis.is_zero() ? ex(0) : tidy(put_values(norm(F.axis), v));
+    out.Omega = F.axis.is_zero() ? ex(0)
+                : !has_float(Omega_value) && usable_as_omega(Omega_value) ? Omega_value : F.Omega;
+    out.form.Omega = out.Omega;
+    auto all_values = [&](const ex& c) {
+        return put_values(F.axis.is_zero() ? c : c.subs(F.Omega == Omega_value), v);
+    };
+    auto model_values = [&](const ex& c) {
+        return tidy(put_values(F.axis.is_zero() ? c : c.subs(F.Omega == out.Omega), exact));
+    };
+    auto vanishes = [&](const ex& c) { return is_zero_scalar(all_values(c)); };
+
+    // which values the coefficients use (for the report)
+    std::vector<ex> used;
+    auto note_symbols = [&](const ex& c) {
+        for (auto it = c.preorder_begin(); it != c.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(P.t) && !it->is_equal(F.Omega) &&
+                (v.scalars.count(*it) || v.vectors.count(*it)))
+                used.push_back(*it);
+    };
+
+    // terms that vanish for the values are dropped (a coefficient split into the
+    // terms of its numerator; the whole coefficient when its terms cancel)
+    auto drop = [&](const ex& c, const std::function<std::string(const ex&)>& text) -> ex {
+        if (c.is_zero()) return c;
+        note_symbols(c);
+        const ex n = GiNaC::normal(c);
+        const ex num = GiNaC::expand(GiNaC::numer(n)), den = GiNaC::denom(n);
+        if (vanishes(den))
+            throw domain_error("the coefficient " + message_text(c) + " is singular for the values");
+        ex kept = 0;
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(num) ? num.nops() : 1); ++i) {
+            const ex term = GiNaC::is_a<GiNaC::add>(num) ? num.op(i) : num;
+            if (vanishes(term)) out.dropped.push_back(text(term / den) + " (0 for the values)");
+            else kept += term;
+        }
+        if (!kept.is_zero() && vanishes(kept)) {
+            out.dropped.push_back(text(kept / den) + " (0 for the values)");
+            kept = 0;
+        }
+        return kept / den;
+    };
+    for (std::size_t m = 0; m <= M; ++m)
+        for (std::size_t j = 0; j < F.ode.A[m].size(); ++j) {
+            const ex c = drop(F.ode.A[m][j], [&](const ex& k) {
+                return term_text(k, unsigned(j), P.unknown_name(m), F.axis);
+            });
+            out.form.ode.A[m][j] = c.is_zero() ? c : model_values(c);
+        }
+    bool leading = false;
+    for (const ex& c : out.form.ode.A[M]) leading = leading || !c.is_zero();
+    if (!leading)
+        throw domain_error("the coefficient of " + P.unknown_name(M) + " is 0 for the values: the equation is not "
+                           "of order " + std::to_string(M) + " there");
+    for (std::size_t m = 0; m <= M && P.is_vector && !F.axis.is_zero(); ++m)
+        for (std::size_t j = 1; j < out.form.ode.A[m].size(); ++j)
+            out.operator_present = out.operator_present || !out.form.ode.A[m][j].is_zero();
+
+    // the data vectors: each one's relation to w decides its local minimal polynomial
+    std::map<std::string, ex> data(F.data.begin(), F.data.end());
+    std::vector<forcing_term> forcing;
+    auto classify_data = [&](const std::string& name, const ex& P_vector, bool zero_coefficient) {
+        data_model d;
+        d.name = name;
+        d.vector = P_vector;
+        const std::string label = to_string(P_vector);
+        const ex Pv = put_values(P_vector, v);
+        if (zero_coefficient || is_zero_vector_or_scalar(Pv)) {
+            d.relation = data_relation::zero;
+            d.reason = zero_coefficient ? "its coefficient is 0" : P_vector.is_zero() ? "" : label + " = 0";
+        } else if (!P.is_vector || !out.operator_present) {
+            d.relation = data_relation::no_operator;
+            d.reason = !P.is_vector ? "scalar problem" : F.axis.is_zero() ? "no operator term"
+                                                                          : "no term with " + to_string(F.axis) + " x";
+        } else if (out.axis_zero) {
+            d.relation = data_relation::along_axis;
+            d.reason = to_string(F.axis) + " = 0";
+        } else if (equal(cross(out.axis_value, Pv), 0)) {
+            d.relation = data_relation::along_axis;
+            d.reason = to_string(F.axis) + " x " + paren(P_vector) + " = 0";
+        } else if (equal(dot(out.axis_value, Pv), 0)) {
+            d.relation = data_relation::perpendicular;
+            d.reason = to_string(F.axis) + " . " + paren(P_vector) + " = 0";
+        } else {
+            d.relation = data_relation::general;
+            d.reason = "neither along nor perpendicular to " + to_string(F.axis);
+        }
+        switch (d.relation) {
+            case data_relation::zero: d.factors = {false, false}; break;
+            case data_relation::along_axis:
+            case data_relation::no_operator: d.factors = {true, false}; break;
+            case data_relation::perpendicular: d.factors = {false, true}; break;
+            case data_relation::general: d.factors = {true, true}; break;
+        }
+        out.algebra.axial = out.algebra.axial || d.factors.axial;
+        out.algebra.planar = out.algebra.planar || d.factors.planar;
+        out.data.push_back(d);
+    };
+    for (const std::string& nm : F.ode.initial) classify_data(nm, data.at(nm), false);
+    for (const forcing_term& f : F.ode.forcing) {
+        const ex vec = data.at(f.vector);
+        const bool vector_zero = is_zero_vector_or_scalar(put_values(vec, v));
+        const ex q = vector_zero ? ex(0) : drop(GiNaC::expand(f.q.to_ex()), [&](const ex& k) {
+            return paren(k) + " " + paren(vec);
+        });
+        classify_data(f.vector, vec, !vector_zero && q.is_zero());
+        if (!q.is_zero()) forcing.push_back({quasi_polynomial::from_ex(model_values(q), P.t), f.power, f.vector});
+    }
+    out.form.ode.forcing = forcing;
+
+    // values put into the coefficients, values kept as symbols until the end
+    std::sort(used.begin(), used.end(), [](const ex& a, const ex& b) { return to_string(a) < to_string(b); });
+    used.erase(std::unique(used.begin(), used.end(), [](const ex& a, const ex& b) { return a.is_equal(b); }),
+               used.end());
+    for (const ex& s : used) {
+        const auto it = v.scalars.find(s);
+        const auto iv = v.vectors.find(s);
+        const ex x = it != v.scalars.end() ? it->second : iv->second;
+        if (has_float(x)) out.deferred_values.push_back(to_string(s));
+        else out.exact_values.push_back(to_string(s) + " = " + to_string(x));
+    }
+    if (!F.axis.is_zero() && !has_float(Omega_value) && out.Omega.is_equal(Omega_value) && out.operator_present)
+        out.exact_values.push_back("|" + to_string(F.axis) + "| = " + to_string(Omega_value));
+
+    // the scalar problems of the model (the characteristic polynomials solved)
+    const rotation_operator_algebra R(out.Omega);
+    if (out.algebra.axial) {
+        std::vector<cex> a0;
+        for (const auto& Am : out.form.ode.A) a0.push_back(cex(Am.empty() ? ex(0) : Am[0], ex(0)));
+        out.axial_problem = polynomial_text(a0);
+    }
+    if (out.algebra.planar) {
+        std::vector<cex> a1;
+        for (const auto& Am : out.form.ode.A) a1.push_back(R.at_i_omega(Am));
+        out.planar_problem = polynomial_text(a1);
+    }
+    out.method = solution_method::closed_form;
+    out.method_reason = "constant coefficients and quasi-polynomial forcing: the closed form is exact "
+                        "(impulse responses of the scalar problems, convolution with the forcing; VI.1.26-38)";
+    return out;
+}
+
+std::string scene_model::report() const {
+    const rotation_operator_algebra R(Omega);
+    const std::string w = axis.is_zero() ? std::string() : to_string(axis);
+    std::string s;
+    const cyclic_factors full{true, true};
+    if (!axis.is_zero() && operator_present) {
+        // the general model in |w| when the values make w = 0 (K nilpotent there)
+        const std::string general = R.degenerate() ? "R[X]/(X^3 + |" + w + "|^2 X)" : algebra_text(R, full);
+        s += "model: " + algebra_text(R, algebra) + ", K = " + w + " x" +
+             (algebra == full ? std::string(" (the general model)") : " (general model " + general + ")") + "\n";
+    } else {
+        s += "model: " + algebra_text(R, algebra) + " (no rotation operator: one scalar problem for every data "
+                                                    "vector)\n";
+    }
+    for (const data_model& d : data) {
+        s += "  " + d.name + " = " + to_string(d.vector) + ": ";
+        switch (d.relation) {
+            case data_relation::zero: s += "no term" + (d.reason.empty() ? "" : " (" + d.reason + ")") + "\n"; continue;
+            case data_relation::along_axis: s += "along " + w + " (" + d.reason + ")"; break;
+            case data_relation::perpendicular: s += "perpendicular to " + w + " (" + d.reason + ")"; break;
+            case data_relation::general: s += "general (" + d.reason + ")"; break;
+            case data_relation::no_operator: s += d.reason; break;
+        }
+        s += ": " + algebra_text(R, d.factors);
+        if (d.factors.axial && !d.factors.planar && d.reason != "scalar problem")
+            s += ", one-dimensional: a multiple of " + paren(d.vector);
+        else if (d.factors.planar && !d.factors.axial)
+            s += ", two-dimensional: in the plane perpendicular to " + w;
+        s += "\n";
+    }
+    for (const std::string& d : dropped) s += "dropped: " + d + "\n";
+    if (!exact_values.empty()) {
+        s += "exact values in the derivation:";
+        for (std::size_t i = 0; i < exact_values.size(); ++i) s += (i ? ", " : " ") + exact_values[i];
+        s += "\n";
+    }
+    if (!deferred_values.empty()) {
+        s += "floating-point values put in at the end:";
+        for (std::size_t i = 0; i < deferred_values.size(); ++i) s += (i ? ", " : " ") + deferred_values[i];
+        s += "\n";
+    }
+    s += "method: closed form";
+    if (!axial_problem.empty()) s += "; axial problem " + axial_problem;
+    if (!planar_problem.empty()) s += "; planar problem " + planar_problem;
+    if (axial_problem.empty() && planar_problem.empty()) s += "; every data vector is 0, so x = 0";
+    s += "\nwhy: " + method_reason + "\n";
+    return s;
+}
+
+scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
+    scene_solution out;
+    out.model = classify(P, v);
+    const rotation_operator_algebra R(out.model.form.Omega);
+    const operator_solution S = solve(out.model.form.ode, R, P.t, out.model.factors());
+    out.model_solution = vector_solution(P, out.model.form, S);
+    out.x = put_values(out.model_solution, v);
+    return out;
+}
+
+}  // namespace symrep::mechanics

@@ -1,0 +1,152 @@
+// symrep/numeric/reference.cpp -- see reference.h.
+#include "numeric/reference.h"
+
+#include <cln/float.h>
+#include <cln/complex.h>
+#include <cln/integer.h>
+#include <cln/rational.h>
+#include <cln/real.h>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "io/error.h"
+
+namespace symrep::num {
+
+GiNaC::numeric exact_rational(double x) {
+    if (!std::isfinite(x)) throw domain_error("reference: input is not a finite number");
+    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(x))));
+}
+
+namespace {
+
+/// Sets GiNaC::Digits for one scope.
+struct digits_scope {
+    long saved;
+    explicit digits_scope(long d) : saved(GiNaC::Digits) { GiNaC::Digits = d; }
+    ~digits_scope() { GiNaC::Digits = saved; }
+    digits_scope(const digits_scope&) = delete;
+    digits_scope& operator=(const digits_scope&) = delete;
+};
+
+/// The printed expression, cut for a message.
+std::string bounded(const GiNaC::ex& e) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    return s.size() > 120 ? s.substr(0, 117) + "..." : s;
+}
+
+/// Floating-point numbers inside an expression (e.g. 7.2921e-5 read from a
+/// script, a float of ~20 digits) replaced by the exact rationals they denote.
+/// Without this, CLN would compute every operation involving them to their
+/// own precision only (its float contagion rule), whatever Digits says.
+struct exact_floats : GiNaC::map_function {
+    GiNaC::ex operator()(const GiNaC::ex& e) override {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (n.is_rational()) return e;
+            const cln::cl_N z = n.to_cl_N();
+            const cln::cl_R re = cln::realpart(z), im = cln::imagpart(z);
+            return GiNaC::numeric(cln::complex(cln::rational(re), cln::rational(im)));
+        }
+        return e.map(*this);
+    }
+};
+
+/// r rounded to long double through two doubles (hi + lo); beyond the double
+/// range: +-infinity or 0, as double arithmetic would give.
+long double to_long_double(const cln::cl_R& r) {
+    if (cln::zerop(r)) return 0.0L;
+    static const cln::cl_RA largest = cln::rational(cln::cl_DF(std::numeric_limits<double>::max()));
+    static const cln::cl_RA smallest_normal = cln::recip(cln::expt_pos(cln::cl_I(2), 1022L));
+    static const cln::cl_RA smallest = cln::recip(cln::expt_pos(cln::cl_I(2), 1074L));
+    const cln::cl_R a = cln::abs(r);
+    if (a > largest) return cln::minusp(r) ? -HUGE_VALL : HUGE_VALL;
+    if (a < smallest) return 0.0L;
+    if (a < smallest_normal) return static_cast<long double>(cln::double_approx(cln::rational(r)));
+    const double hi = cln::double_approx(r);
+    const cln::cl_R rest = r - cln::rational(cln::cl_DF(hi));
+    const double lo = cln::abs(rest) < smallest_normal ? 0.0 : cln::double_approx(rest);
+    return static_cast<long double>(hi) + lo;
+}
+
+}  // namespace
+
+GiNaC::ex exact_floats_of(const GiNaC::ex& e) {
+    exact_floats f;
+    return f(e);
+}
+
+GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
+    const digits_scope scope(digits);
+    const GiNaC::ex v = exact_floats_of(e).evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+        throw domain_error("reference: not a real number: " + bounded(v));
+    return GiNaC::ex_to<GiNaC::numeric>(v);
+}
+
+double accurate_double(const GiNaC::ex& e, int max_digits) {
+    const GiNaC::ex x = exact_floats_of(e);
+    cln::cl_R previous = 0;
+    double result = 0;
+    for (int digits = 30; digits <= std::max(30, max_digits); digits *= 2) {
+        const cln::cl_R now = cln::the<cln::cl_R>(evaluate_real(x, digits).to_cl_N());
+        result = static_cast<double>(to_long_double(now));
+        if (digits > 30) {
+            if (cln::zerop(now)) {
+                if (cln::zerop(previous) && digits >= 120) break;
+            } else if (cln::abs(now - previous) <= cln::abs(now) * cln::recip(cln::expt_pos(cln::cl_I(2), 60L))) {
+                break;
+            }
+        }
+        previous = now;
+    }
+    return result;
+}
+
+std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+                                        const std::vector<double>& point, int digits) {
+    if (point.size() != inputs.size())
+        throw type_error("reference: " + std::to_string(point.size()) + " values for " +
+                         std::to_string(inputs.size()) + " inputs");
+    if (digits < 20 || digits > 10000) throw domain_error("reference: digits must be in 20 .. 10000");
+    GiNaC::exmap at;
+    for (std::size_t i = 0; i < inputs.size(); ++i) at[inputs[i]] = exact_rational(point[i]);
+    std::vector<long double> out;
+    out.reserve(outputs.size());
+    for (const GiNaC::ex& e : outputs) {
+        // floats made exact before the substitution, which would round float * input at once
+        const GiNaC::ex x = exact_floats_of(e);
+        GiNaC::ex at_point;
+        try {
+            at_point = x.subs(at, GiNaC::subs_options::no_pattern);
+        } catch (const error&) {
+            throw;
+        } catch (const std::exception&) {
+            // 0/0 at the point (w = 0 in 1/|w|^2 terms, a resonance w0 = nu in
+            // 1/(w0^2 - nu^2)): the value of the continuous extension, the limit
+            // along a generic line through the point, inputs -> point + lambda c.
+            const GiNaC::symbol lambda("lambda");
+            GiNaC::exmap line;
+            for (std::size_t i = 0; i < inputs.size(); ++i)
+                line[inputs[i]] = exact_rational(point[i]) + lambda * GiNaC::numeric(int(2 * i + 3), int(i + 2));
+            try {
+                const GiNaC::ex near = x.subs(line, GiNaC::subs_options::no_pattern);
+                at_point = GiNaC::series_to_poly(near.series(lambda == 0, 1)).subs(lambda == 0);
+            } catch (const error&) {
+                throw;
+            } catch (const std::exception& why) {
+                throw domain_error(std::string("reference: no value at this point (") + why.what() + ")");
+            }
+        }
+        const GiNaC::numeric v = evaluate_real(at_point, digits);
+        const cln::cl_R r = cln::the<cln::cl_R>(v.to_cl_N());
+        out.push_back(to_long_double(r));
+    }
+    return out;
+}
+
+}  // namespace symrep::num

@@ -1,0 +1,52 @@
+// symrep/numeric/reference.h -- the exact value of a closed form at double
+// inputs, to extended precision: the reference against which every double
+// evaluation (compiled, stable, integrated) is measured.
+//
+// Each input double is taken as the exact binary rational it denotes (no
+// decimal rounding), substituted into the expressions, and the result is
+// evaluated by GiNaC/CLN with `digits` decimal digits. So the reference is the
+// exact solution for the same binary inputs, the measure the speed-accuracy
+// charts and the stability tests need: it separates the error of an
+// evaluation method from the error of the inputs themselves.
+//
+// Cost: milliseconds per point (CLN software floats); for tests and charts,
+// not for production evaluation.
+#pragma once
+
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace symrep::num {
+
+/// The exact rational value of a double (finite; throws domain_error for inf/nan).
+GiNaC::numeric exact_rational(double x);
+
+/// e with every floating-point number in it replaced by the exact rational it
+/// denotes (a float read from a script is a binary number of ~20 digits; CLN
+/// would otherwise compute with no more digits than it has).
+GiNaC::ex exact_floats_of(const GiNaC::ex& e);
+
+/// The real value of a symbol-free expression with `digits` decimal digits
+/// (CLN; floats in e taken as exact); domain_error when it is not a real number.
+GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits);
+
+/// The double nearest the exact value of a symbol-free expression (its
+/// floats taken as exact): evaluated by CLN with 30, 60, 120 ... digits until
+/// two precisions agree to 2^-60 relative (Ziv). Immune to the cancellation
+/// and long phases that a fixed-precision evalf suffers ((1 - cos(x))/x^2 at
+/// x = 1e-12 is 0 with 20 digits). domain_error when it is not a real number.
+double accurate_double(const GiNaC::ex& e, int max_digits = 2560);
+
+/// outputs evaluated at inputs = point (point.size() == inputs.size()) with
+/// `digits` significant decimal digits, rounded to long double at the end.
+/// Where an output is 0/0 at the point (a removable singularity: |w| = 0 in a
+/// rotating-frame solution, an exact resonance), its limit along a line
+/// through the point (the value of its continuous extension) is returned;
+/// a pole gives domain_error.
+/// Throws type_error when a symbol has no value, domain_error for a complex or
+/// non-numeric result. digits: 20 .. 10000.
+std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+                                        const std::vector<double>& point, int digits = 60);
+
+}  // namespace symrep::num
