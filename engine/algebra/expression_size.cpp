@@ -1,7 +1,6 @@
 // symrep/algebra/expression_size.cpp
 #include "algebra/expression_size.h"
 
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -96,46 +95,6 @@ struct counter {
     }
 };
 
-using degrees = std::map<GiNaC::ex, double, GiNaC::ex_is_less>;
-
-/// Upper bounds of the degrees of e in its variables (symbols, and the atoms that
-/// normal() treats as variables: function calls, non-integer powers).
-degrees degrees_of(const GiNaC::ex& e) {
-    degrees d;
-    if (GiNaC::is_a<GiNaC::numeric>(e)) return d;
-    if (GiNaC::is_a<GiNaC::add>(e)) {
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            for (const auto& [v, k] : degrees_of(e.op(i))) d[v] = std::max(d[v], k);
-        return d;
-    }
-    if (GiNaC::is_a<GiNaC::mul>(e)) {
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            for (const auto& [v, k] : degrees_of(e.op(i))) d[v] += k;
-        return d;
-    }
-    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer()) {
-        const double n = std::fabs(GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double());
-        for (const auto& [v, k] : degrees_of(e.op(0))) d[v] = sat(k * n);
-        return d;
-    }
-    d[e] = 1;
-    return d;
-}
-
-/// The work of the gcd that normal() computes to cancel a fraction: the size of
-/// the dense polynomial of the denominator's degrees, prod_v (deg_v + 1) (the
-/// multivariate gcd of GiNaC works variable by variable).
-double gcd_work(const fraction& f) {
-    if (f.den.empty()) return 0;
-    degrees d;
-    for (const auto& [base, g] : f.den)
-        for (const auto& [v, k] : degrees_of(base)) d[v] = sat(d[v] + k * g.second);
-    double p = 1;
-    for (const auto& [v, k] : d) p = sat(p * (k + 1));
-    return p;
-}
-
 }  // namespace
 
 double expanded_terms(const GiNaC::ex& e, bool fractions) {
@@ -143,15 +102,7 @@ double expanded_terms(const GiNaC::ex& e, bool fractions) {
     const fraction f = c.terms(e);
     if (c.nodes > max_nodes) return saturated;
     const double den = f.den.empty() ? 0 : f.den_terms();
-    return sat(std::max(sat(f.num + den), fractions ? gcd_work(f) : 0.0) + c.inner);
-}
-
-double factor_work(const GiNaC::ex& e) {
-    const double t = expanded_terms(e, true);  // also bounds the pass over e below
-    if (t >= saturated) return saturated;
-    double dense = 1;
-    for (const auto& [v, k] : degrees_of(e)) dense = sat(dense * (k + 1));
-    return sat(t + 50 * dense);
+    return sat(sat(f.num + den) + c.inner);
 }
 
 double expression_nodes(const GiNaC::ex& e) {
@@ -180,9 +131,9 @@ double determinant_terms(const GiNaC::matrix& m, bool charpoly) {
 
 void guard_terms(double n, const char* what) {
     check_interrupt();
-    std::ostringstream os;
-    os.precision(2);
     if (n > max_expanded_terms) {
+        std::ostringstream os;
+        os.precision(2);
         os << what << ": the expression is too large (";
         if (n >= saturated)
             os << "more than 10^30";
@@ -191,13 +142,6 @@ void guard_terms(double n, const char* what) {
         os << " terms to multiply out; the limit is 10^8)";
         throw size_error(os.str());
     }
-    const long long deadline = deadline_ticks().load(std::memory_order_relaxed);
-    if (deadline == 0 || n < 1000) return;
-    const auto left = std::chrono::steady_clock::duration(deadline) - std::chrono::steady_clock::now().time_since_epoch();
-    if (n <= std::chrono::duration<double>(left).count() * expanded_terms_per_second) return;
-    os << "time limit: " << what << " would not end within the statement's time limit (--time-limit): "
-       << "the expression is too large (an estimated " << n << " terms to multiply out)";
-    throw error(os.str());
 }
 
 void guard_expansion(const GiNaC::ex& e, const char* what, bool fractions) {

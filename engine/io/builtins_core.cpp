@@ -223,7 +223,7 @@ void register_core_builtins(registry& r) {
         "expression) over the rationals.", "", "factor(x^2 - 1)", 1, 1,
         [](const builtin& b, const args_t& a, context&) {
             return map_value(a[0], b, [&](const ex& x) {
-                guard_terms(factor_work(x), b.name.c_str());
+                guard_expansion(x, b.name.c_str(), true);
                 return GiNaC::factor(GiNaC::normal(x));
             });
         });

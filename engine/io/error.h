@@ -8,6 +8,7 @@
 #pragma once
 
 #include <atomic>
+#include <new>
 #include <chrono>
 #include <cstddef>
 #include <stdexcept>
@@ -43,6 +44,36 @@ inline void check_interrupt() {
     const long long d = deadline_ticks().load(std::memory_order_relaxed);
     if (d != 0 && std::chrono::steady_clock::now().time_since_epoch().count() > d)
         throw error("time limit: the statement ran longer than its time limit (--time-limit)");
+}
+
+/// The interruption of a computation inside a library call (GiNaC's normal(),
+/// expand(), factor(), ... run to their end once made, and see no
+/// check_interrupt()): thrown by operator new (io/allocation_interrupt.cpp, which
+/// programs link to get it) once an interruption is requested or the deadline
+/// has passed. A std::bad_alloc, so that every allocation site lets it through;
+/// what() is the message ("interrupted" or "time limit: ..."). The language
+/// reports it as that message, never as "out of memory".
+class allocation_interrupted : public std::bad_alloc {
+public:
+    explicit allocation_interrupted(const char* message) noexcept : message_(message) {}
+    const char* what() const noexcept override { return message_; }
+
+private:
+    const char* message_;  // a string literal: throwing allocates nothing
+};
+
+/// Nonzero while the language evaluates a statement (the statement clock of
+/// io/interpreter.cpp): only then does operator new throw allocation_interrupted,
+/// so that code outside a statement (the REPL's own work, a library user's) never
+/// sees it. Per thread, as GiNaC's computations are.
+inline int& interruptible_allocations() {
+    thread_local int depth = 0;
+    return depth;
+}
+
+/// The message of an allocation failure: the interruption's, or out_of_memory.
+inline const char* allocation_failure_message(const std::bad_alloc& e, const char* out_of_memory) {
+    return dynamic_cast<const allocation_interrupted*>(&e) ? e.what() : out_of_memory;
 }
 
 /// A position in a script: 1-based line and column.

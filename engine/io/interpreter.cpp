@@ -51,11 +51,13 @@ std::string clear_message(const std::string& m) {
 
 /// The clock of a statement: sets `start` to now and, for a time limit > 0, the
 /// deadline that the engine's long loops and guards see through check_interrupt()
-/// (io/error.h), until destroyed; a load() inside a statement keeps the outer limit.
+/// (io/error.h), and lets operator new throw allocation_interrupted
+/// (io/allocation_interrupt.cpp), until destroyed.
 class statement_clock {
 public:
     statement_clock(double limit, std::chrono::steady_clock::time_point& start)
         : previous_(deadline_ticks().load()) {
+        ++interruptible_allocations();  // io/allocation_interrupt.cpp may stop GiNaC calls from here on
         start = std::chrono::steady_clock::now();
         if (limit > 0)
             deadline_ticks().store((start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -63,7 +65,10 @@ public:
                                        .time_since_epoch()
                                        .count());
     }
-    ~statement_clock() { deadline_ticks().store(previous_); }
+    ~statement_clock() {
+        deadline_ticks().store(previous_);
+        --interruptible_allocations();
+    }
     statement_clock(const statement_clock&) = delete;
     statement_clock& operator=(const statement_clock&) = delete;
 
@@ -74,7 +79,8 @@ private:
 /// The message to show for an exception: symrep's own verbatim, others translated.
 std::string message_of(const std::exception& e) {
     if (dynamic_cast<const symrep::error*>(&e)) return e.what();
-    if (dynamic_cast<const std::bad_alloc*>(&e)) return out_of_memory_message;
+    if (const auto* b = dynamic_cast<const std::bad_alloc*>(&e))
+        return allocation_failure_message(*b, out_of_memory_message);
     return clear_message(e.what());
 }
 
@@ -634,8 +640,8 @@ int session::run_string(const std::string& text, const std::string& name) {
             exec(*s, true);
         } catch (const script_error& e) {
             report(e.where, e.what());
-        } catch (const std::bad_alloc&) {
-            report(here, out_of_memory_message);
+        } catch (const std::bad_alloc& e) {
+            report(here, allocation_failure_message(e, out_of_memory_message));
         } catch (const symrep::error& e) {
             report(here, e.what());
         } catch (const std::exception& e) {
@@ -883,6 +889,9 @@ value session::eval(const node& n) {
         return eval_inner(n);
     } catch (const script_error&) {
         throw;
+    } catch (const allocation_interrupted& e) {  // Ctrl-C or the time limit, inside a library call
+        throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+                           std::make_exception_ptr(symrep::error(e.what())));
     } catch (const std::bad_alloc&) {
         throw script_error(out_of_memory_message, {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
                            std::make_exception_ptr(size_error(out_of_memory_message)));
