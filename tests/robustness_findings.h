@@ -31,7 +31,7 @@ inline constexpr const char* multicomplex_polynomial_minpoly =
 /// allocated when eval() threw).
 inline constexpr const char* robustness_findings[] = {
     sobrero_polynomial_log, sobrero_polynomial_factor, multicomplex_polynomial_minpoly, "0^I", "0^(-1+I)", "0^0",
-    "matrix([[1, 2], [3, 4]]) + 1", "1 - matrix([[1, 2], [3, 4]])", "expect(u0 == matrix([[1, 2], [3, 4]]))",
+    "matrix([[1, 2], [3, 4]]) + 1", "1 - matrix([[1, 2], [3, 4]])", "2*M0 + 1e-3", "(x + 1) - M0^2", "M4 := canonical_matrix(r0/u0); M4 + 1e-3", "expect(u0 == matrix([[1, 2], [3, 4]]))",
     "binomial(M0, 3)", "I - (M0 < 1)", "(M0 = 1) - 3/4", "expect(0.5 = M0)", "expect((M0 = 1) == (M0 = 2))",
     "1e-3^10^30", "old := digits(5); (1e-3^5)^(-5); digits(old)", "subs(1/(t - 1), [t = 1])", "eval(1/t, t = 0)",
 };

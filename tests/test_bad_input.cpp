@@ -267,6 +267,19 @@ TEST(BadInput, MatrixPlusNumber) {
     expect_error<type_error>(t, "matrix([[1, 2], [3, 4]]) + 1", "a matrix cannot be added to a number here");
     expect_error<type_error>(t, "3/4 - matrix([[1, 2], [3, 4]])", "a matrix cannot be added to a number here");
     expect_error<type_error>(t, "matrix([[1, 2], [3, 4]]) - (x + 1)", "cannot combine a matrix with x + 1");
+    // sums and products holding a matrix (the robustness run, input #47679 of seed 20261124)
+    for (const char* m : {"2*matrix([[1, 2], [3, 4]])", "-matrix([[1, 2], [3, 4]])", "x*matrix([[1, 2], [3, 4]])",
+                          "matrix([[1, 2], [3, 4]])^2"}) {
+        expect_error<type_error>(t, std::string(m) + " + 1e-3", "a matrix cannot be added to a number here");
+        expect_error<type_error>(t, "(x + 1) - " + std::string(m), "cannot combine a matrix with x + 1");
+    }
+    EXPECT_EQ(t.val("2*matrix([[1, 2], [3, 4]]) + matrix([[1, 0], [0, 1]]) == matrix([[3, 4], [6, 9]])").as_bool(), true);
+    // a matrix of vector entries (input #47679 of the robustness run, seed 20261124)
+    t.run("vector r0\nM := canonical_matrix(r0/element(multicomplex(1), [1, 2, 3, 4]))");
+    expect_error<type_error>(t, "M + 1e-3", "a 4x4 matrix is not a vector");
+    expect_error<type_error>(t, "1 - M", "a 4x4 matrix is not a vector");
+    expect_error<type_error>(t, "r0 + 2", "");
+    EXPECT_TRUE(t.val("r0 + [1, 2, 3] - [1, 2, 3] == r0").as_bool());
     EXPECT_EQ(t.val("matrix([[1, 2], [3, 4]]) + 0 == matrix([[1, 2], [3, 4]])").as_bool(), true);
     EXPECT_EQ(t.val("basis(multicomplex(1), 0) == matrix([[1, 2], [3, 4]])").as_bool(), false);
     expect_error<type_error>(t, "matrix([[1, 2], [3, 4]]) < 1", "cannot compare");

@@ -38,12 +38,14 @@ void poll_interruption() {
     if (allocations < quiet_until) return;
     if (symrep::interrupt_flag().load(std::memory_order_relaxed)) {
         quiet_until = allocations + quiet_allocations;
+        ++symrep::allocation_interruptions();
         throw symrep::allocation_interrupted("interrupted");
     }
     if ((allocations & deadline_poll_mask) != 0) return;
     const long long d = symrep::deadline_ticks().load(std::memory_order_relaxed);
     if (d != 0 && std::chrono::steady_clock::now().time_since_epoch().count() > d) {
         quiet_until = allocations + quiet_allocations;
+        ++symrep::allocation_interruptions();
         throw symrep::allocation_interrupted("time limit: the statement ran longer than its time limit (--time-limit)");
     }
 }

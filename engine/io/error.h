@@ -71,6 +71,15 @@ inline int& interruptible_allocations() {
     return depth;
 }
 
+/// How many times operator new (io/allocation_interrupt.cpp) has thrown
+/// allocation_interrupted in this process. GiNaC is not exception safe
+/// everywhere: an interruption may leave a few of its objects unreachable (the
+/// robustness test reads this to tell those leaks from others).
+inline std::atomic<long>& allocation_interruptions() {
+    static std::atomic<long> n{0};
+    return n;
+}
+
 /// The message of an allocation failure: the interruption's, or out_of_memory.
 inline const char* allocation_failure_message(const std::bad_alloc& e, const char* out_of_memory) {
     return dynamic_cast<const allocation_interrupted*>(&e) ? e.what() : out_of_memory;

@@ -161,6 +161,13 @@ long max_numeric_bits(const ex& e) {
     return m;
 }
 
+/// The numeric term of e: e itself if a number, the number GiNaC keeps last in a sum, else 0.
+numeric numeric_term(const ex& e) {
+    if (is_a<numeric>(e)) return ex_to<numeric>(e);
+    if (is_a<GiNaC::add>(e) && e.nops() > 0 && is_a<numeric>(e.op(e.nops() - 1))) return ex_to<numeric>(e.op(e.nops() - 1));
+    return 0;
+}
+
 ex ex_binary(const std::string& op, const ex& a, const ex& b) {
     // a relation between matrices (m = 1) takes no arithmetic: GiNaC would apply it to both sides
     for (const ex* r : {&a, &b})
@@ -175,6 +182,10 @@ ex ex_binary(const std::string& op, const ex& a, const ex& b) {
         if (!other.is_zero())
             throw type_error("cannot combine a matrix with " + print_ex(other) + " (operator '" + op + "')");
     }
+    if ((op == "+" || op == "-") && (has_matrix(a) || has_matrix(b)) &&
+        !(op == "+" ? numeric_term(a) + numeric_term(b) : numeric_term(a) - numeric_term(b)).is_zero())
+        // 2*M + 1, (x + 1) + M: the same, for sums that hold a matrix (add::eval would throw and leak)
+        throw type_error("a matrix cannot be added to a number here (use a multiple of the identity matrix)");
     if (op == "+") return finish(a + b, a, b, op);
     if (op == "-") return finish(a - b, a, b, op);
     if (op == "*") return finish(a * b, a, b, op);
@@ -396,6 +407,11 @@ value binary_op(const std::string& op, const value& a, const value& b) {
         (is_a<GiNaC::matrix>(a.as_ex()) || is_a<GiNaC::matrix>(b.as_ex()))) {
         // w + [1, 2, 3], 2*[0, 0, t] - r0: a vector sum with a literal term, as the
         // printer writes solutions (matrix arithmetic would refuse the abstract vector)
+        // each side a vector first: GiNaC's sum of a matrix and a number throws, and loses the sum
+        // (a 4x4 matrix of vector entries + 1e-3: the robustness run, input #47679 of seed 20261124)
+        const bool va = is_vector(a.as_ex()), vb = is_vector(b.as_ex());  // both: each may be ill-formed
+        if (!va || !vb)
+            throw type_error(std::string("cannot ") + verb(op) + " a vector and a scalar (operator '" + op + "')");
         const ex r = op == "+" ? a.as_ex() + b.as_ex() : a.as_ex() - b.as_ex();
         (void)is_vector(r);  // [1, 2] + w: type_error
         return r;
