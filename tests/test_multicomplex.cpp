@@ -560,6 +560,27 @@ TEST(Multicomplex, LogIII_1_53_68_69) {
     EXPECT_TRUE(num_eq(A->log(A->exp(small, 1)), small, 1e-28));
 }
 
+// (III.1.53) exp(log w) = w exactly for symbolic coordinates: exp gives
+// |z_k| cos(arg z_k) and |z_k| sin(arg z_k) with arg z_k = atan2(Im, Re), which
+// the simplification writes back as Re and Im (scalar.h, trig_of_arctangents).
+TEST(Multicomplex, ExpOfLogIsExactForSymbolicCoordinates) {
+    for (unsigned n = 0; n <= 2; ++n) {
+        auto A = multicomplex::make(n);
+        coeffs w;
+        for (std::size_t k = 0; k < A->dim(); ++k) w.push_back(GiNaC::realsymbol("a" + std::to_string(k)));
+        const coeffs back = A->exp(A->log(w), 1);
+        for (std::size_t k = 0; k < A->dim(); ++k) EXPECT_TRUE(back[k].is_equal(w[k])) << n << ": " << back[k];
+    }
+    // the identities themselves, and what they leave alone
+    const GiNaC::realsymbol x("x"), y("y"), z("z");
+    EXPECT_TRUE(is_zero_scalar(GiNaC::cos(GiNaC::atan2(y, x)) * GiNaC::sqrt(x * x + y * y) - x));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::sin(-GiNaC::atan2(y, x)) * GiNaC::sqrt(x * x + y * y) + y));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::tan(GiNaC::atan2(y, x)) - y / x));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::sin(GiNaC::atan(z)) - z / GiNaC::sqrt(1 + z * z)));
+    EXPECT_FALSE(is_zero_scalar(GiNaC::cos(2 * GiNaC::atan2(y, x)) - x / GiNaC::sqrt(x * x + y * y)));
+    EXPECT_TRUE(trig_of_arctangents(GiNaC::cos(2 * GiNaC::atan2(y, x))).is_equal(GiNaC::cos(2 * GiNaC::atan2(y, x))));
+}
+
 // ------------------------------------ III.1.72-95 semiexponential, special type
 TEST(Multicomplex, SemiexponentialIII_1_72_76) {
     for (unsigned n = 1; n <= 3; ++n) {

@@ -198,6 +198,45 @@ inline bool has_symbolic_square_root(const GiNaC::ex& e) {
     return false;
 }
 
+/// sin, cos and tan of atan2(y, x) and of atan(z) as algebraic functions:
+/// cos(atan2(y, x)) = x/sqrt(x^2 + y^2), sin(atan2(y, x)) = y/sqrt(x^2 + y^2),
+/// tan(atan2(y, x)) = y/x; cos(atan(z)) = 1/sqrt(1 + z^2), sin(atan(z)) =
+/// z/sqrt(1 + z^2) (identities for real arguments, which atan2 has). exp of
+/// the logarithm of an element (III.1.58: log |z| + i arg z) then gives back its
+/// coordinates. The sum under the root is expanded, as log_modulus writes it, so
+/// that sqrt(x^2 + y^2) meets the modulus it came from.
+inline GiNaC::ex trig_of_arctangents(const GiNaC::ex& e) {
+    if (!e.has(GiNaC::atan2(GiNaC::wild(0), GiNaC::wild(1))) && !e.has(GiNaC::atan(GiNaC::wild())))
+        return e;
+    struct rewrite : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            const bool s = GiNaC::is_the_function<GiNaC::sin_SERIAL>(y), c = GiNaC::is_the_function<GiNaC::cos_SERIAL>(y),
+                       t = GiNaC::is_the_function<GiNaC::tan_SERIAL>(y);
+            if (!s && !c && !t) return y;
+            GiNaC::ex a = y.op(0), sign = 1;
+            if (GiNaC::is_a<GiNaC::mul>(a) && a.nops() == 2 && a.op(1).is_equal(-1)) {  // sin(-u) = -sin(u)
+                a = a.op(0);
+                sign = c ? 1 : -1;
+            }
+            GiNaC::ex num, den;  // the tangent of the angle a is num/den, with den > 0 or num/den real
+            if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(a)) {
+                num = a.op(0);
+                den = a.op(1);
+            } else if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(a) && !a.op(0).has(GiNaC::I)) {
+                num = a.op(0);
+                den = 1;
+            } else {
+                return y;
+            }
+            if (t) return sign * num / den;
+            const GiNaC::ex r = GiNaC::sqrt(GiNaC::expand(num * num + den * den));
+            return sign * (s ? num : den) / r;
+        }
+    } f;
+    return f(e);
+}
+
 /// Exact zero test: true when the expression normalizes to 0 (logarithms and
 /// powers of rational numbers are compared over primes, sin, cos, tan and the
 /// hyperbolic functions through exponentials, and square roots of expressions
@@ -205,7 +244,7 @@ inline bool has_symbolic_square_root(const GiNaC::ex& e) {
 inline bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
     guard_expansion(x, "zero test", true);
-    const GiNaC::ex y = expand_rational_logs(x);
+    const GiNaC::ex y = expand_rational_logs(trig_of_arctangents(x));
     // square roots of expressions first as algebraic symbols: faster than normal(),
     // whose gcds over such atoms are slow, and complete where normal() is not
     if (has_symbolic_square_root(y)) {
@@ -277,7 +316,7 @@ inline GiNaC::ex normalize_trig_signs(const GiNaC::ex& e) {
 /// of becoming one fraction over exp(...). Identity for doubles.
 inline GiNaC::ex tidy(const GiNaC::ex& x) {
     guard_expansion(x, "simplification", false);
-    const GiNaC::ex e = GiNaC::expand(x);
+    const GiNaC::ex e = GiNaC::expand(trig_of_arctangents(x));
     if (has_function_call(e)) return GiNaC::expand(normalize_trig_signs(e));
     guard_expansion(e, "simplification", true);
     return GiNaC::normal(e);
