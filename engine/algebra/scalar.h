@@ -177,8 +177,15 @@ inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
         for (GiNaC::ex part : parts) {
             GiNaC::exmap atoms;  // functions and other non-polynomial parts as symbols
             part = GiNaC::expand(part).to_polynomial(atoms);
-            for (const auto& [b, s] : r.q)
-                part = GiNaC::expand(GiNaC::rem(part, GiNaC::pow(s, 2) - b.to_polynomial(atoms), s));
+            for (const auto& [b, s] : r.q) {
+                // s^2 = N/D: the base may be a fraction (q^2 |B|^2/m^2 + ...), whose 1/m
+                // to_polynomial would make an unrelated atom; N and D are made polynomials
+                // apart, and the remainder has coefficients in the fractions of the rest
+                const GiNaC::ex nd = GiNaC::normal(b).numer_denom();
+                const GiNaC::ex base = nd.op(1).is_equal(1) ? b.to_polynomial(atoms)
+                                                            : nd.op(0).to_polynomial(atoms) / nd.op(1).to_polynomial(atoms);
+                part = GiNaC::expand(GiNaC::rem(part, GiNaC::pow(s, 2) - base, s, false));
+            }
             if (!GiNaC::normal(part).is_zero()) return false;
         }
         return true;
