@@ -36,6 +36,11 @@ const application applications[] = {
      "E B v0"},
     {"charge position VI.1.58", "vector E, B, v0, r0; positive m",
      "ode(m*r'' = q*(r' x B + E), r(0) = r0, r'(0) = v0)", "q m", "E B v0 r0"},
+    // the Lorentz force next to the Coriolis term: K = (q/m B + 2 w) x, one operator (cauchy_problem.cpp)
+    {"charge in a rotating frame", "vector E, B, w, v0, r0; positive m",
+     "ode(m*r'' = q*(r' x B + E) - 2*m*(w x r'), r(0) = r0, r'(0) = v0)", "q m", "E B w v0 r0"},
+    {"charge velocity in a rotating frame", "vector E, B, w, v0; positive m",
+     "ode(m*v' = q*(v x B + E) + m*(v x w), v(0) = v0)", "q m", "E B w v0"},
     {"foucault VI.1.68", "vector w, r0, v0; positive w0",
      "ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)", "w0", "w r0 v0"},
     {"first order, general forcing VI.1.26-28", "vector w, a, b, r0",
@@ -117,6 +122,46 @@ TEST(CauchyProblem, WrongSolutionsAreCaught) {
     EXPECT_GT(rel, 1e-2);
 }
 
+// Cross products along several vectors on one derivative are one operator: the
+// axis is their combination, read off the equation (normalized by the leading
+// coefficient), and the solution is the general one with w = that combination.
+TEST(CauchyProblem, CrossTermsAlongSeveralVectorsMakeOneAxis) {
+    test_session t;
+    ASSERT_EQ(t.run("vector E, B, w, r0, v0; positive m\n"
+                    "P := ode(m*r'' = q*(r' x B + E) - 2*m*(w x r'), r(0) = r0, r'(0) = v0)\n"
+                    "Z := ode(r'' = -(W x r') + q/m*E, r(0) = r0, r'(0) = v0)\n"),
+              1)  // W is no vector: Z fails
+        << t.err.str();
+    ASSERT_EQ(t.run("vector W\nZ := ode(r'' = -(W x r') + q/m*E, r(0) = r0, r'(0) = v0)\n"
+                    "s := solve(P)\nz := subs(solve(Z), [W = q/m*B + 2*w])"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(P, s)").as_bool()) << t.out.str();
+    EXPECT_TRUE(t.val("s == z").as_bool());  // the same as solving with a named axis W, then W = q/m B + 2 w
+    // the scene: values make the axis q/m B + 2 w perpendicular to v0 and E
+    t.run("vals := [q = 2, m = 3, B = [0, 0, 3], w = [0, 0, 1/2], E = [1, 0, 0], r0 = [0, 0, 0], v0 = [0, 1, 0]]");
+    EXPECT_TRUE(t.val("check(P, solve(P, vals), vals)").as_bool()) << t.out.str();
+    EXPECT_NE(t.out.str().find("perpendicular to q*B/m + 2*w"), std::string::npos) << t.out.str();
+}
+
+// With floating-point values the residual of a right solution is rounding: check
+// accepts it and says so; a solution wrong by 1e-9 relative is still refused.
+TEST(CauchyProblem, FloatingPointValuesCheckUpToRounding) {
+    test_session t;
+    ASSERT_EQ(t.run("vector w, g, r0, v0\nP := ode(r'' = -2*(w x r') - w x (w x r) + g, r(0) = r0, r'(0) = v0)\n"
+                    "vals := [w = [0, 1.3e-3, 2.1e-3], g = [0, 0, -9.81], r0 = [1, 2, 3], v0 = [0.5, 0, 0]]\n"
+                    "s := solve(P, vals)"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(P, s, vals)").as_bool()) << t.out.str();
+    EXPECT_NE(t.out.str().find("check: 0 up to rounding (floating-point values)"), std::string::npos) << t.out.str();
+    t.out.str("");
+    EXPECT_FALSE(t.val("check(P, s*(1 + 1e-9*t^2), vals)").as_bool());
+    EXPECT_NE(t.out.str().find("the residual is"), std::string::npos) << t.out.str();
+    EXPECT_FALSE(t.val("check(P, s*(1 + 1e-9), vals)").as_bool());
+    EXPECT_NE(t.out.str().find("r(0) differs"), std::string::npos) << t.out.str();
+}
+
 // Resonance: forcing at the natural frequency gives secular terms exactly.
 TEST(CauchyProblem, ResonanceGivesSecularTerms) {
     test_session t;
@@ -185,7 +230,9 @@ TEST(CauchyProblem, BadProblemsGetClearMessages) {
         const char* message;
     };
     const bad cases[] = {
-        {"vector a, b, r0\node(r' + a x r + b x r = 0, r(0) = r0)", "one K = w x"},
+        {"vector a, b, r0\node(r'' + a x r' + b x r = 0, r(0) = r0, r'(0) = r0)", "along different vectors"},
+        {"vector a, b, r0\node(r'' + a x r' + b x (b x r) = 0, r(0) = r0, r'(0) = r0)", "one K = w x"},
+        {"vector a, b, r0\node(r' + a x r + b x r = 0, r(0) = r0)", ""},  // K = (a + b) x
         {"vector r0\node(r' + (r . r)*r = 0, r(0) = r0)", "not linear"},
         {"vector w, r0\node(r' + t*(w x r) = 0, r(0) = r0)", "depends on t"},
         {"vector r0\node(r'' + r = 0, r(0) = r0)", "r'' appears"},

@@ -179,7 +179,8 @@ void register_mechanics_builtins(registry& r) {
         });
     add(r, "check", "check(P, s [, values])",
         "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "
-        "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md); "
+        "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md; with "
+        "floating-point values, 0 up to rounding: at most 10^(5 - Digits) times the largest term, and said); "
         "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
         "values put in: the check of a scene's solution solve(P, values).",
         "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
@@ -189,6 +190,10 @@ void register_mechanics_builtins(registry& r) {
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
             const mechanics::solution_check k = mechanics::check(P, s);
             if (!k.residual_zero) c.out() << "check: the residual is " << print_ex(k.residual) << ", not 0\n";
+            if (k && k.rounding > 0)
+                c.out() << "check: 0 up to rounding (floating-point values): what remains is at most "
+                        << std::setprecision(2) << k.rounding << std::setprecision(6)
+                        << " times the largest term\n";
             for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
                 if (!k.initial_differences[m].is_zero())
                     c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "

@@ -1,6 +1,8 @@
 // symrep/mechanics/cauchy_problem.cpp
 #include "mechanics/cauchy_problem.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "algebra/scalar.h"
@@ -35,12 +37,16 @@ ex without(const cauchy_problem& P, const ex& e, const std::vector<std::size_t>&
     return e.subs(m);
 }
 
-// The axis w: the first vector acting on an unknown; every later one must equal it.
-void set_axis(ex& axis, const ex& v, const cauchy_problem& P, std::size_t m) {
+void require_vector_symbol(const ex& v, const cauchy_problem& P, std::size_t m) {
     if (!is_vector_symbol(v))
         throw domain_error("the operator acting on " + P.unknown_name(m) + " involves " + to_string(v) +
                            ", which is not a vector symbol: declare it with 'vector' and give its "
                            "components as values when evaluating");
+}
+
+// The axis w: the first vector acting on an unknown; every later one must equal it.
+void set_axis(ex& axis, const ex& v, const cauchy_problem& P, std::size_t m) {
+    require_vector_symbol(v, P, m);
     if (axis.is_zero()) {
         axis = v;
     } else if (!(axis - v).is_zero()) {
@@ -50,9 +56,11 @@ void set_axis(ex& axis, const ex& v, const cauchy_problem& P, std::size_t m) {
 }
 
 // A_m(K) from the part L of E that is linear in u = x^(m): terms c u, c (w x u),
-// c (w . u) w  (= c K^2 u + c |w|^2 u). `Wsq` collects the |w|^2 coefficients.
+// c (w . u) w  (= c K^2 u + c |w|^2 u). `Wsq` collects the |w|^2 coefficients;
+// the cross terms are summed into `cross` (c (a x u) + d (b x u) = (c a + d b) x u),
+// whose vector the caller makes the axis, and A[1] is left to it.
 void read_operator(const cauchy_problem& P, std::size_t m, const ex& L, ex& axis, operator_polynomial& A,
-                   ex& Wsq) {
+                   ex& Wsq, ex& cross) {
     const ex u = P.unknowns[m];
     A.assign(3, ex(0));
     if (!P.is_vector) {
@@ -72,11 +80,12 @@ void read_operator(const cauchy_problem& P, std::size_t m, const ex& L, ex& axis
             A[0] += c;
         } else if (is_ex_the_function(mono, vcross) && (mono.op(0) == u || mono.op(1) == u)) {
             const bool first = mono.op(0) == u;  // u x v = -(v x u)
-            set_axis(axis, first ? mono.op(1) : mono.op(0), P, m);
+            const ex v = first ? mono.op(1) : mono.op(0);
+            require_vector_symbol(v, P, m);
             if (has_any(c, P.unknowns))
                 throw domain_error("the equation is not linear in " + P.unknown_name(m) + ": term " +
                                    to_string(c * mono));
-            A[1] += first ? -c : c;
+            cross += (first ? -c : c) * v;
         } else if (is_vector_symbol(mono) && c.has(u)) {
             // c = k (w . u) with k free of u
             const GiNaC::symbol z;
@@ -94,6 +103,64 @@ void read_operator(const cauchy_problem& P, std::size_t m, const ex& L, ex& axis
                                ", c w x " + P.unknown_name(m) + ", c w x (w x " + P.unknown_name(m) +
                                ") or c (w . " + P.unknown_name(m) + ") w)");
         }
+    }
+}
+
+// The scalar coefficient of the vector symbol v in c = sum_j c_j a_j.
+ex coefficient_of(const ex& c, const ex& v) {
+    ex k = 0;
+    for (const vector_term& term : canonical_terms(c))
+        if (term.monomial.is_equal(v)) k += term.coefficient;
+    return k;
+}
+
+// sum_j c_j a_j / k with each coefficient normalized: (q B + 2 m w)/m = q/m B + 2 w.
+ex combination_over(const ex& c, const ex& k) {
+    ex out = 0;
+    for (const vector_term& term : canonical_terms(c)) out += GiNaC::normal(term.coefficient / k) * term.monomial;
+    return out;
+}
+
+// The axis from the cross terms c_m = sum_j c_mj a_j of each order m (c_m x x^(m)).
+// One vector a in all of them (with or without (a . u) a terms, `squares`): K = a x
+// and A_m[1] = c_m / a. Several vectors (the Lorentz force q v x B next to the
+// Coriolis term 2 m w x v): their sum is one vector, and if the cross terms of
+// every order are multiples of one combination W = c_m0 / k (k: the leading
+// coefficient of the equation, so that W reads q/m B + 2 w), K = W x: the
+// operators are polynomials in one K and the general theorems apply as they are.
+void set_cross_axis(const cauchy_problem& P, const std::vector<ex>& cross, bool squares,
+                    std::vector<operator_polynomial>& A, ex& axis) {
+    std::vector<ex> vs;
+    for (const ex& c : cross)
+        for (const ex& v : vector_symbols(c))
+            if (std::find_if(vs.begin(), vs.end(), [&](const ex& x) { return x.is_equal(v); }) == vs.end())
+                vs.push_back(v);
+    if (vs.empty()) return;
+    if (vs.size() == 1 || squares) {  // one vector (squares: (w . u) w terms have set it; all must agree)
+        for (std::size_t m = 0; m < cross.size(); ++m) {
+            if (cross[m].is_zero()) continue;
+            const std::vector<ex> here = vector_symbols(cross[m]);
+            for (const ex& v : here) set_axis(axis, v, P, m);
+            A[m][1] += GiNaC::normal(cross[m] / axis);
+        }
+        return;
+    }
+    std::size_t m0 = 0;
+    while (cross[m0].is_zero()) ++m0;
+    const ex& lead = A.back()[0];
+    const bool scalar_lead = !lead.is_zero() && A.back()[1].is_zero() && A.back()[2].is_zero();
+    const ex k = scalar_lead && m0 != A.size() - 1 ? lead : ex(1);
+    axis = combination_over(cross[m0], k);
+    for (std::size_t m = 0; m < cross.size(); ++m) {
+        if (cross[m].is_zero()) continue;
+        // c_m = lambda W: lambda from the coefficient of one vector, then checked on all
+        const ex lambda = GiNaC::normal(coefficient_of(cross[m], vs[0]) / coefficient_of(axis, vs[0]));
+        if (lambda.is_zero() || !equal(cross[m], lambda * axis))
+            throw domain_error("the cross products acting on " + P.unknown_name(m0) + " and " +
+                               P.unknown_name(m) + " are along different vectors (" + to_string(axis) + " and " +
+                               to_string(cross[m]) + "): the solver needs the operators to be polynomials in one "
+                               "K = w x");
+        A[m][1] += lambda;
     }
 }
 
@@ -144,7 +211,7 @@ operator_form reduce(const cauchy_problem& P) {
     operator_form out;
     out.axis = 0;
     std::vector<operator_polynomial> A(M + 1);
-    std::vector<ex> Wsq(M + 1, ex(0));
+    std::vector<ex> Wsq(M + 1, ex(0)), cross(M + 1, ex(0));
     ex linear_sum = 0;
     for (std::size_t m = 0; m <= M; ++m) {
         std::vector<std::size_t> others;
@@ -152,12 +219,14 @@ operator_form reduce(const cauchy_problem& P) {
             if (k != m) others.push_back(k);
         const ex L = without(P, P.expression, others) - f;
         linear_sum += L;
-        read_operator(P, m, L, out.axis, A[m], Wsq[m]);
+        read_operator(P, m, L, out.axis, A[m], Wsq[m], cross[m]);
+    }
+    set_cross_axis(P, cross, !out.axis.is_zero(), A, out.axis);
+    for (std::size_t m = 0; m <= M; ++m)
         for (const ex& a : A[m])
             if (a.has(P.t))
                 throw domain_error("the coefficient " + text(a) + " of " + P.unknown_name(m) +
                                    " depends on " + text(P.t) + ": only constant coefficients are solved");
-    }
     // E = f + sum_m L_m exactly, i.e. no products of unknowns
     const ex rest = P.expression - f - linear_sum;
     if (P.is_vector ? !equal(rest, 0) : !is_zero_scalar(rest))
@@ -241,6 +310,67 @@ ex solve(const cauchy_problem& P) {
     return vector_solution(P, F, solve(F.ode, R, P.t));
 }
 
+double rounding_tolerance() { return std::pow(10.0, 5 - long(GiNaC::Digits)); }
+
+namespace {
+
+bool has_float_number(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_crational()) return true;
+    return false;
+}
+
+// The largest coefficient of e (the entries of a matrix; the terms of a sum): each
+// term with t and every function call set to 1, evaluated; -1 when a term is not a
+// number then (a symbol left: nothing to compare).
+double largest_coefficient(const ex& e, const ex& t) {
+    if (GiNaC::is_a<GiNaC::matrix>(e)) {
+        double m = 0;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const double x = largest_coefficient(e.op(i), t);
+            if (x < 0) return -1;
+            m = std::max(m, x);
+        }
+        return m;
+    }
+    struct ones : GiNaC::map_function {
+        ex t;
+        ex operator()(const ex& x) override {
+            if (GiNaC::is_a<GiNaC::function>(x) && x.has(t)) return 1;
+            return x.is_equal(t) ? ex(1) : x.map(*this);
+        }
+    } f;
+    f.t = t;
+    const ex x = GiNaC::expand(e);
+    double m = 0;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(x) ? x.nops() : 1); ++i) {
+        const ex c = GiNaC::evalf(f(GiNaC::is_a<GiNaC::add>(x) ? x.op(i) : x));
+        if (!GiNaC::is_a<GiNaC::numeric>(c)) return -1;
+        m = std::max(m, GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(c)).to_double());
+    }
+    return m;
+}
+
+// A vector (or scalar) expression with its values in, as components: a 3x1 matrix.
+ex as_components(const ex& e, bool is_vector) { return is_vector ? canonical(e).evalm() : e; }
+
+// residual / scale when the residual is rounding-size (-1 otherwise): the residual
+// is the sum of `parts`, with floating-point numbers in them.
+double rounding_ratio(const ex& residual, const std::vector<ex>& parts, const ex& t, bool is_vector) {
+    const double r = largest_coefficient(as_components(residual, is_vector), t);
+    if (r < 0) return -1;
+    double scale = 0;
+    for (const ex& p : parts) {
+        const double x = largest_coefficient(as_components(p, is_vector), t);
+        if (x < 0) return -1;
+        scale = std::max(scale, x);
+    }
+    if (r == 0) return 0;
+    return scale > 0 && r <= rounding_tolerance() * scale ? r / scale : -1;
+}
+
+}  // namespace
+
 solution_check check(const cauchy_problem& P, const ex& s) {
     solution_check out;
     std::vector<ex> d{s};
@@ -257,11 +387,43 @@ solution_check check(const cauchy_problem& P, const ex& s) {
         out.residual = P.expression.subs(sub);
         out.residual_zero = is_zero_scalar(out.residual);
     }
+    const bool floats = has_float_number(P.expression) || has_float_number(s) ||
+                        std::any_of(P.initial.begin(), P.initial.end(), has_float_number);
+    if (!out.residual_zero && floats) {
+        // the terms of E, each with the solution in: the residual is their sum
+        const ex E = GiNaC::expand(P.expression);
+        std::vector<ex> parts;
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(E) ? E.nops() : 1); ++i) {
+            const ex term = GiNaC::is_a<GiNaC::add>(E) ? E.op(i) : E;
+            if (P.is_vector) {
+                vmap sub;
+                for (std::size_t m = 0; m <= P.order(); ++m) sub[P.unknowns[m]] = d[m];
+                parts.push_back(subs_vectors(term, sub));
+            } else {
+                GiNaC::exmap sub;
+                for (std::size_t m = 0; m <= P.order(); ++m) sub[P.unknowns[m]] = d[m];
+                parts.push_back(term.subs(sub));
+            }
+        }
+        const double q = rounding_ratio(out.residual, parts, P.t, P.is_vector);
+        if (q >= 0) {
+            out.residual_zero = true;
+            out.rounding = std::max(out.rounding, q);
+        }
+    }
     out.residual = out.residual_zero ? ex(0) : P.is_vector ? canonical(out.residual) : GiNaC::normal(out.residual);
     out.initial_ok = true;
     for (std::size_t m = 0; m < P.order(); ++m) {
-        ex diff = d[m].subs(P.t == 0) - P.initial[m];
-        const bool zero = P.is_vector ? equal(diff, 0) : is_zero_scalar(diff);
+        const ex at0 = d[m].subs(P.t == 0);
+        ex diff = at0 - P.initial[m];
+        bool zero = P.is_vector ? equal(diff, 0) : is_zero_scalar(diff);
+        if (!zero && floats) {
+            const double q = rounding_ratio(diff, {at0, P.initial[m]}, P.t, P.is_vector);
+            if (q >= 0) {
+                zero = true;
+                out.rounding = std::max(out.rounding, q);
+            }
+        }
         out.initial_differences.push_back(zero ? ex(0) : diff);
         out.initial_ok = out.initial_ok && zero;
     }

@@ -79,9 +79,18 @@ struct solution_check {
     std::vector<GiNaC::ex> initial_differences;  ///< s^(m)(0) - X_m
     bool residual_zero = false;
     bool initial_ok = false;
+    /// With floating-point numbers in P or s, what is not exactly 0 may be rounding:
+    /// it is taken as 0 when every coefficient of it is at most rounding_tolerance()
+    /// times the largest coefficient of the terms it is the sum of; `rounding` is then
+    /// the largest such ratio met (0 when everything was exactly 0).
+    double rounding = 0;
     explicit operator bool() const { return residual_zero && initial_ok; }
 };
-/// Exact check (vector equality by components, see vector.h).
+/// Exact check (vector equality by components, see vector.h); with floating-point
+/// numbers, exact up to rounding (solution_check::rounding).
 solution_check check(const cauchy_problem& P, const GiNaC::ex& s);
+/// The relative size taken as rounding by check(): 10^(5 - Digits) (1e-12 at
+/// GiNaC's default of 17 digits: floats carry ~16, a few are lost in the sums).
+double rounding_tolerance();
 
 }  // namespace symrep::mechanics
