@@ -157,6 +157,12 @@ TEST(CauchyProblem, FloatingPointValuesCheckUpToRounding) {
     EXPECT_NE(t.out.str().find("check: 0 up to rounding (floating-point values)"), std::string::npos) << t.out.str();
     t.out.str("");
     EXPECT_FALSE(t.val("check(P, s*(1 + 1e-9*t^2), vals)").as_bool());
+    t.out.str("");
+    // a scene's solution is a vector by components: a literal [x, y, z] adds to it
+    EXPECT_FALSE(t.val("check(P, s + 1e-9*t^2*[0, 0, 1], vals)").as_bool());
+    EXPECT_NE(t.out.str().find("the residual is"), std::string::npos) << t.out.str();
+    EXPECT_TRUE(t.val("s + [1, 2, 3] - [1, 2, 3] == s").as_bool());
+    EXPECT_TRUE(t.val("[1, 2, 3] + s == s + [1, 2, 3]").as_bool());
     EXPECT_NE(t.out.str().find("the residual is"), std::string::npos) << t.out.str();
     EXPECT_FALSE(t.val("check(P, s*(1 + 1e-9), vals)").as_bool());
     EXPECT_NE(t.out.str().find("r(0) differs"), std::string::npos) << t.out.str();

@@ -94,6 +94,19 @@ inline bool has_tan_or_hyperbolic(const GiNaC::ex& e) {
     return false;
 }
 
+/// True when exponentials of e can meet each other: two different exp(...), or
+/// one exp of a sum (exp(x)*exp(y) = exp(x + y) is then seen through Y_m below).
+inline bool has_related_exponentials(const GiNaC::ex& e) {
+    const GiNaC::ex* first = nullptr;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (!GiNaC::is_the_function<GiNaC::exp_SERIAL>(*it)) continue;
+        if (GiNaC::is_a<GiNaC::add>(it->op(0))) return true;
+        if (first && !first->is_equal(*it)) return true;
+        first = &*it;
+    }
+    return false;
+}
+
 /// sin and cos (and tan) of linear combinations written through exponentials:
 /// with one symbol X_m standing for e^(i m) per monomial m of the arguments,
 /// sin(sum c_k m_k) = (E - 1/E)/(2i), cos = (E + 1/E)/2, E = prod X_{m_k}^{c_k}.
@@ -101,6 +114,7 @@ inline bool has_tan_or_hyperbolic(const GiNaC::ex& e) {
 /// in the X_m is 0, so the zero test sees the addition theorems (sin((a + b) t)
 /// = ...). Likewise sinh, cosh, tanh with symbols Y_m standing for e^m, and
 /// exp(u) = prod Y_{m_k}^{c_k} when the expression has a hyperbolic function
+/// or exponentials that can meet (has_related_exponentials)
 /// (cosh(x)^2 - sinh(x)^2 = 1, cosh(x) = (e^x + e^-x)/2).
 inline GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
     struct to_exp : GiNaC::map_function {
@@ -143,7 +157,7 @@ inline GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
             return sh ? s : ch ? c : th ? s / c : H;
         }
     } f;
-    f.exponentials = has_tan_or_hyperbolic(e);
+    f.exponentials = has_tan_or_hyperbolic(e) || has_related_exponentials(e);
     return f(e);
 }
 
@@ -259,7 +273,8 @@ inline bool is_zero_scalar(const GiNaC::ex& x) {
     } else if (GiNaC::normal(y).is_zero()) {
         return true;
     }
-    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y))
+    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y) &&
+        !has_related_exponentials(y))
         return false;
     const GiNaC::ex z = trig_exponential_form(y);
     guard_expansion(z, "zero test", true);

@@ -308,6 +308,12 @@ ex as_literal(const value& v) {
     return vector_literal(l[0].as_ex(), l[1].as_ex(), l[2].as_ex());
 }
 bool is_vector_ex(const value& v) { return v.is_ex() && !vector_symbols(v.as_ex()).empty(); }
+/// A vector by its components (what solve(P, values) and eval give): a 3x1 matrix.
+bool is_column3(const value& v) {
+    if (!v.is_ex() || !is_a<GiNaC::matrix>(v.as_ex())) return false;
+    const GiNaC::matrix& m = ex_to<GiNaC::matrix>(v.as_ex());
+    return m.rows() == 3 && m.cols() == 1;
+}
 ex vector_operand(const std::string& op, const value& v, const char* side) {
     if (v.is_ex()) return v.as_ex();
     if (is_triple(v)) return as_literal(v);
@@ -372,7 +378,8 @@ value binary_op(const std::string& op, const value& a, const value& b) {
         const ex u = vector_operand(op, a, "left"), v = vector_operand(op, b, "right");
         return op == "x" ? cross(u, v) : dot(u, v);
     }
-    if ((op == "+" || op == "-" || op == "=") && ((is_vector_ex(a) && is_triple(b)) || (is_triple(a) && is_vector_ex(b))))
+    if ((op == "+" || op == "-" || op == "=") && (((is_vector_ex(a) || is_column3(a)) && is_triple(b)) ||
+                                                  (is_triple(a) && (is_vector_ex(b) || is_column3(b)))))
         return binary_op(op, a.is_list() ? value(as_literal(a)) : a, b.is_list() ? value(as_literal(b)) : b);
     if (op == "=" && a.is_ex() && is_triple(b))
         return ex(GiNaC::relational(a.as_ex(), as_literal(b), GiNaC::relational::equal));
