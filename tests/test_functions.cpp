@@ -10,6 +10,8 @@
 #include "algebra/scalar.h"
 #include "gen_tables.h"
 #include "io/error.h"
+#include "io/printer.h"
+#include "test_support.h"
 
 using namespace symrep;
 using namespace symrep::test;
@@ -289,6 +291,16 @@ TEST(Scalar, TanAndHyperbolicIdentitiesAreZero) {
     EXPECT_FALSE(is_zero_scalar(cosh(x) - 1));
     EXPECT_FALSE(is_zero_scalar(GiNaC::tan(x) - x));
     EXPECT_FALSE(is_zero_scalar(cosh(x) - GiNaC::cos(x)));
+}
+
+// |c y| = |c| |y| for a number c, in the language's abs.
+TEST(Scalar, AbsTakesNumbersOut) {
+    symrep::test::test_session t;
+    EXPECT_TRUE(t.ex("abs(-x) - abs(x)").is_zero());
+    EXPECT_TRUE(t.ex("abs(-2*x*y) - 2*abs(x*y)").is_zero());
+    EXPECT_TRUE(t.ex("abs(-3/4) - 3/4").is_zero());
+    EXPECT_TRUE(t.ex("abs(x - y) - abs(x - y)").is_zero());
+    EXPECT_EQ(symrep::lang::print_ex(t.ex("abs(-x + y)")), "abs(-x + y)");  // a sum: as it is
 }
 
 // Exponentials meet each other in the zero test too (exp(x) exp(y) = exp(x + y)),

@@ -46,6 +46,13 @@ TEST(OutputLatex, ScalarExpressions) {
     EXPECT_EQ(out_of("print(latex(x^2/2 + sqrt(y) - 3*a*b/c))"), "\\frac{x^{2}}{2} - \\frac{3 a b}{c} + \\sqrt{y}\n");
     EXPECT_EQ(out_of("print(latex(sin(alpha)^2 + x1))"), "x_1 + \\sin\\left(\\alpha\\right)^{2}\n");
     EXPECT_EQ(out_of("print(latex(-1/3))"), "-\\frac{1}{3}\n");
+    // a sum alone above or below the bar needs no parentheses; next to another factor it does
+    EXPECT_EQ(out_of("print(latex((a + b)/(c - d)))"), "\\frac{a + b}{c - d}\n");
+    EXPECT_EQ(out_of("print(latex(1/(x + 1)))"), "\\frac{1}{x + 1}\n");
+    EXPECT_EQ(out_of("print(latex((a + b)/(2*(c - d))))"), "\\frac{a + b}{2 \\left(c - d\\right)}\n");
+    EXPECT_EQ(out_of("print(latex(3*(a + b)/(c - d)))"), "\\frac{3 \\left(a + b\\right)}{c - d}\n");
+    EXPECT_EQ(out_of("print(latex((a + b)^2/(c - d)^3))"),
+              "\\frac{\\left(a + b\\right)^{2}}{\\left(c - d\\right)^{3}}\n");
     EXPECT_EQ(out_of("print(latex(matrix([[1, x], [0, y^3]])))"),
               "\\begin{pmatrix} 1 & x \\\\ 0 & y^{3} \\end{pmatrix}\n");
 }

@@ -356,7 +356,14 @@ void register_core_builtins(registry& r) {
     add_elementary(r, "sinh", "hyperbolic sine", "sinh(0)", [](const ex& x) { return GiNaC::sinh(x); });
     add_elementary(r, "cosh", "hyperbolic cosine", "cosh(0)", [](const ex& x) { return GiNaC::cosh(x); });
     add_elementary(r, "tanh", "hyperbolic tangent", "tanh(0)", [](const ex& x) { return GiNaC::tanh(x); });
-    add_elementary(r, "abs", "absolute value", "abs(-3/4)", [](const ex& x) { return GiNaC::abs(x); });
+    add_elementary(r, "abs", "absolute value", "abs(-3/4)", [](const ex& x) -> ex {
+        // |c y| = |c| |y| for a number c (GiNaC keeps abs(-x) and abs(2*x) as they are)
+        if (GiNaC::is_a<GiNaC::mul>(x) && GiNaC::is_a<numeric>(x.op(x.nops() - 1))) {
+            const numeric c = ex_to<numeric>(x.op(x.nops() - 1));
+            return GiNaC::abs(c) * GiNaC::abs(x / c);
+        }
+        return GiNaC::abs(x);
+    });
     add_elementary(r, "real_part", "real part", "real_part(2 + 3*I)", [](const ex& x) { return GiNaC::real_part(x); });
     add_elementary(r, "imag_part", "imaginary part", "imag_part(2 + 3*I)",
                    [](const ex& x) { return GiNaC::imag_part(x); });

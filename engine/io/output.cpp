@@ -141,14 +141,21 @@ bool is_vector_factor(const ex& f) {
 // c * prod(factors) with c > 0 (the caller handles the sign).
 out_t lx_product(const numeric& c, const std::vector<ex>& factors) {
     std::vector<std::string> num, den, vec;
+    std::string den_bare, num_bare;  // the text of a lone factor without parentheses (a sum alone in \frac)
+    std::size_t num_factors = 0;
     for (const ex& f : factors) {
         if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_real() &&
             ex_to<numeric>(f.op(1)).is_negative() && !is_ex_the_function(f.op(0), vdot)) {
-            den.push_back(lparen(lx(GiNaC::pow(f.op(0), -f.op(1))), l_power));
+            const out_t o = lx(GiNaC::pow(f.op(0), -f.op(1)));
+            den.push_back(lparen(o, l_power));
+            den_bare = o.text;
         } else if (is_vector_factor(f)) {
             vec.push_back(lparen(lx(f), l_power));
         } else {
-            num.push_back(lparen(lx(f), l_power));
+            const out_t o = lx(f);
+            num.push_back(lparen(o, l_power));
+            num_bare = o.text;
+            ++num_factors;
         }
     }
     std::sort(num.begin(), num.end());
@@ -164,7 +171,10 @@ out_t lx_product(const numeric& c, const std::vector<ex>& factors) {
         if (num.size() == 1 && factors.size() == 1 && c == 1) return lx(factors[0]);
         return {join_factors(num), num.size() == 1 ? l_power : l_product};
     }
-    return {"\\frac{" + (num.empty() ? std::string("1") : join_factors(num)) + "}{" + join_factors(den) + "}",
+    const std::string top = num.empty() ? std::string("1")
+                            : num_factors == 1 && num.size() == 1 && vec.empty() && c.is_rational() && c.numer() == 1 ? num_bare
+                                                                                             : join_factors(num);
+    return {"\\frac{" + top + "}{" + (den.size() == 1 && c.denom() == 1 ? den_bare : join_factors(den)) + "}",
             l_product};
 }
 
