@@ -8,6 +8,8 @@
 // exact check of the problem with the values put in.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <random>
 #include <sstream>
 
@@ -295,6 +297,29 @@ TEST(Scene, VanishingTermsAreDroppedAndExactValuesUsed) {
     // floating-point values stay symbols until the end (an exact derivation cannot use them)
     ASSERT_EQ(f.run("m2 := model(P, [w0 = 0.38])"), 0) << f.err.str();
     EXPECT_NE(f.val("m2").as_string().find("floating-point values put in at the end: w0"), std::string::npos);
+}
+
+// A floating-point value that meets the problem exactly (w0 = 2.0 next to cos(2 t):
+// resonance) makes the solution with it put in at the end singular; solve() then
+// derives again with the float as the exact number it is, says so, and gives the
+// resonant solution in floating point (it was "the values make ... singular").
+TEST(Scene, FloatValuesThatMeetAreTakenExactly) {
+    test_session t;
+    ASSERT_EQ(t.run("vector r0, a\nP := ode(r'' + w0^2*r = cos(2*t)*a, r(0) = r0, r'(0) = 0)\n"
+                    "v := [w0 = 2.0, r0 = [1, 0, 0], a = [0, 1, 0]]\ns := solve(P, v)"),
+              0)
+        << t.err.str();
+    EXPECT_NE(t.out.str().find("floating-point values taken exactly (put in at the end, they made the solution "
+                               "singular): w0"),
+              std::string::npos)
+        << t.out.str();
+    EXPECT_TRUE(t.val("check(P, s, v)").as_bool()) << t.out.str();
+    // the secular term t sin(2 t)/4 of the resonance, in floats
+    const double y = GiNaC::ex_to<GiNaC::numeric>(t.ex("eval(s, v, t = 3)[1]")).to_double();
+    EXPECT_NEAR(y, 3 * std::sin(6.0) / 4, 1e-14);
+    // a float that does not meet anything stays deferred
+    ASSERT_EQ(t.run("s2 := solve(P, [w0 = 2.5, r0 = [1, 0, 0], a = [0, 1, 0]])"), 0) << t.err.str();
+    EXPECT_NE(t.out.str().find("floating-point values put in at the end: w0"), std::string::npos);
 }
 
 // Classification is exact, never numeric: a floating-point residue of rounding

@@ -6,6 +6,7 @@
 
 #include "algebra/scalar.h"
 #include "io/error.h"
+#include "numeric/reference.h"
 #include "vector/vector.h"
 
 namespace symrep::mechanics {
@@ -326,6 +327,11 @@ std::string scene_model::report() const {
         for (std::size_t i = 0; i < exact_values.size(); ++i) s += (i ? ", " : " ") + exact_values[i];
         s += "\n";
     }
+    if (!floats_made_exact.empty()) {
+        s += "floating-point values taken exactly (put in at the end, they made the solution singular):";
+        for (std::size_t i = 0; i < floats_made_exact.size(); ++i) s += (i ? ", " : " ") + floats_made_exact[i];
+        s += "; the result is evaluated in floating point\n";
+    }
     if (!deferred_values.empty()) {
         s += "floating-point values put in at the end:";
         for (std::size_t i = 0; i < deferred_values.size(); ++i) s += (i ? ", " : " ") + deferred_values[i];
@@ -345,7 +351,24 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
     const rotation_operator_algebra R(out.model.form.Omega);
     const operator_solution S = solve(out.model.form.ode, R, P.t, out.model.factors());
     out.model_solution = vector_solution(P, out.model.form, S);
-    out.x = put_values(out.model_solution, v);
+    try {
+        out.x = put_values(out.model_solution, v);
+    } catch (const domain_error&) {
+        if (out.model.deferred_values.empty()) throw;
+        // the floats meet where the derivation, without them, could not see it (w0 = 2.0 next to
+        // cos(2 t) is a resonance): derive again with the floats as the exact numbers they are
+        parameter_values exact = v;
+        for (auto& [k, x] : exact.vectors) x = num::exact_floats_of(x);
+        for (auto& [k, x] : exact.scalars) x = num::exact_floats_of(x);
+        cauchy_problem Q = P;
+        Q.reduced = nullptr;
+        Q.expression = num::exact_floats_of(P.expression);
+        for (ex& x : Q.initial) x = num::exact_floats_of(x);
+        scene_solution again = solve(Q, exact);
+        again.model.floats_made_exact = out.model.deferred_values;
+        again.x = GiNaC::evalf(again.x);
+        return again;
+    }
     return out;
 }
 

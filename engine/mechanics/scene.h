@@ -78,6 +78,10 @@ struct scene_model {
     std::vector<std::string> dropped;   ///< terms of the equation that vanish for the values
     std::vector<std::string> exact_values;     ///< "w0 = 1/2": put into the derivation
     std::vector<std::string> deferred_values;  ///< names of floating-point values, put in at the end
+    /// Floating-point values that, put in at the end, made the solution singular (w0 = 2.0
+    /// next to cos(2 t): a resonance the derivation did not see); solve() then derives again
+    /// with them exact (the binary numbers they are) and evaluates the result in floats.
+    std::vector<std::string> floats_made_exact;
     cyclic_factors algebra{false, false};      ///< m = lcm of the m_P: the scene's algebra R[X]/(m)
     std::string axial_problem, planar_problem; ///< characteristic polynomials solved ("" when not needed)
     solution_method method = solution_method::closed_form;
