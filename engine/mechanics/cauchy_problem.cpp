@@ -17,7 +17,11 @@ namespace {
 
 using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
 
-std::string text(const ex& e) { return message_text(e, 200); }
+// e as the printer writes it (1/(w0 - 2), not GiNaC's (-2+w0)^(-1)), cut for a message
+std::string text(const ex& e) {
+    std::string s = to_string(e);
+    return s.size() > 200 ? s.substr(0, 197) + "..." : s;
+}
 
 bool has_any(const ex& e, const std::vector<ex>& syms) {
     for (const ex& s : syms)

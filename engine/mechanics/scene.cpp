@@ -96,7 +96,10 @@ ex put_values(const ex& e, const parameter_values& v) {
     } catch (const error&) {
         throw;
     } catch (const std::exception& err) {
-        throw domain_error("the values make " + message_text(e) + " singular (" + err.what() + ")");
+        std::string why = err.what(), text = to_string(e);
+        if (why.find("division by zero") != std::string::npos) why = "division by zero";  // GiNaC's power::eval()
+        if (text.size() > 160) text = text.substr(0, 157) + "...";
+        throw domain_error("the values make " + text + " singular (" + why + ")");
     }
 }
 
@@ -178,7 +181,7 @@ scene_model classify(const cauchy_problem& P, const parameter_values& v) {
         const ex n = GiNaC::normal(c);
         const ex num = GiNaC::expand(GiNaC::numer(n)), den = GiNaC::denom(n);
         if (vanishes(den))
-            throw domain_error("the coefficient " + message_text(c) + " is singular for the values");
+            throw domain_error("the coefficient " + to_string(c) + " is singular for the values");
         ex kept = 0;
         for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(num) ? num.nops() : 1); ++i) {
             const ex term = GiNaC::is_a<GiNaC::add>(num) ? num.op(i) : num;
