@@ -49,7 +49,7 @@ std::string paren(const ex& e) {
 
 // "w0^2 r'", "2 w x r'", "-q/m w x v": a term c K^j x^(m) of the equation.
 std::string term_text(const ex& c, unsigned j, const std::string& x, const ex& axis) {
-    const std::string w = axis.is_zero() ? std::string("K") : to_string(axis);
+    const std::string w = axis.is_zero() ? std::string("K") : paren(axis);
     const std::string op = j == 0 ? x : j == 1 ? w + " x " + x : w + " x (" + w + " x " + x + ")";
     if (c.is_equal(1)) return op;
     if (c.is_equal(-1)) return "-" + op;
@@ -225,19 +225,19 @@ scene_model classify(const cauchy_problem& P, const parameter_values& v) {
         } else if (!P.is_vector || !out.operator_present) {
             d.relation = data_relation::no_operator;
             d.reason = !P.is_vector ? "scalar problem" : F.axis.is_zero() ? "no operator term"
-                                                                          : "no term with " + to_string(F.axis) + " x";
+                                                                          : "no term with " + paren(F.axis) + " x";
         } else if (out.axis_zero) {
             d.relation = data_relation::along_axis;
             d.reason = to_string(F.axis) + " = 0";
         } else if (equal(cross(out.axis_value, Pv), 0)) {
             d.relation = data_relation::along_axis;
-            d.reason = to_string(F.axis) + " x " + paren(P_vector) + " = 0";
+            d.reason = paren(F.axis) + " x " + paren(P_vector) + " = 0";
         } else if (equal(dot(out.axis_value, Pv), 0)) {
             d.relation = data_relation::perpendicular;
-            d.reason = to_string(F.axis) + " . " + paren(P_vector) + " = 0";
+            d.reason = paren(F.axis) + " . " + paren(P_vector) + " = 0";
         } else {
             d.relation = data_relation::general;
-            d.reason = "neither along nor perpendicular to " + to_string(F.axis);
+            d.reason = "neither along nor perpendicular to " + paren(F.axis);
         }
         switch (d.relation) {
             case data_relation::zero: d.factors = {false, false}; break;
@@ -296,12 +296,13 @@ scene_model classify(const cauchy_problem& P, const parameter_values& v) {
 
 std::string scene_model::report() const {
     const rotation_operator_algebra R(Omega);
-    const std::string w = axis.is_zero() ? std::string() : to_string(axis);
+    const std::string w = axis.is_zero() ? std::string() : paren(axis);  // (q*B/m + 2*w) x: a sum in parentheses
+    const std::string wbar = axis.is_zero() ? std::string() : to_string(axis);  // |q*B/m + 2*w|
     std::string s;
     const cyclic_factors full{true, true};
     if (!axis.is_zero() && operator_present) {
         // the general model in |w| when the values make w = 0 (K nilpotent there)
-        const std::string general = R.degenerate() ? "R[X]/(X^3 + |" + w + "|^2 X)" : algebra_text(R, full);
+        const std::string general = R.degenerate() ? "R[X]/(X^3 + |" + wbar + "|^2 X)" : algebra_text(R, full);
         s += "model: " + algebra_text(R, algebra) + ", K = " + w + " x" +
              (algebra == full ? std::string(" (the general model)") : " (general model " + general + ")") + "\n";
     } else {
