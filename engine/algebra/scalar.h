@@ -97,12 +97,14 @@ inline bool has_tan_or_hyperbolic(const GiNaC::ex& e) {
 /// True when exponentials of e can meet each other: two different exp(...), or
 /// one exp of a sum (exp(x)*exp(y) = exp(x + y) is then seen through Y_m below).
 inline bool has_related_exponentials(const GiNaC::ex& e) {
-    const GiNaC::ex* first = nullptr;
+    GiNaC::ex first;  // a copy: *it lives in the iterator's stack, which moves as it advances
+    bool seen = false;
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
         if (!GiNaC::is_the_function<GiNaC::exp_SERIAL>(*it)) continue;
         if (GiNaC::is_a<GiNaC::add>(it->op(0))) return true;
-        if (first && !first->is_equal(*it)) return true;
-        first = &*it;
+        if (seen && !first.is_equal(*it)) return true;
+        first = *it;
+        seen = true;
     }
     return false;
 }
