@@ -151,6 +151,11 @@ void set_cross_axis(const cauchy_problem& P, const std::vector<ex>& cross, bool 
     }
     std::size_t m0 = 0;
     while (cross[m0].is_zero()) ++m0;
+    for (const vector_term& term : canonical_terms(cross[m0]))
+        if (term.coefficient.has(P.t))  // t (B x r) + w x r: the axis would turn with t
+            throw domain_error("the coefficient " + text(term.coefficient) + " of " + to_string(term.monomial) +
+                               " x " + P.unknown_name(m0) + " depends on " + text(P.t) +
+                               ": only constant coefficients are solved");
     const ex& lead = A.back()[0];
     const bool scalar_lead = !lead.is_zero() && A.back()[1].is_zero() && A.back()[2].is_zero();
     const ex k = scalar_lead && m0 != A.size() - 1 ? lead : ex(1);
