@@ -168,6 +168,26 @@ TEST(CauchyProblem, FloatingPointValuesCheckUpToRounding) {
     EXPECT_NE(t.out.str().find("r(0) differs"), std::string::npos) << t.out.str();
 }
 
+// The reduced Foucault problem (VI.2.94) has one square root, sqrt(w0^2 + |w|^2):
+// the printed solution has its coefficients in Q(...)[sqrt(w0^2 + |w|^2)] with
+// rationalized denominators (no 1/(sqrt(w0^2 + |w|^2) - |w|)), and is the thesis's.
+TEST(CauchyProblem, SquareRootsInSolutionsAreRationalized) {
+    test_session t;
+    ASSERT_EQ(t.run("vector w, r0, v0; positive w0\nR := ode(r'' + 2*w x r' + w0^2*r = 0, r(0) = r0, r'(0) = v0)\n"
+                    "u := solve(R)\nW := norm(w)\nws := sqrt(W^2 + w0^2)\n"
+                    "psi0 := r0*cos(w0*t) + (v0 + w x r0)/w0*sin(w0*t)\n"
+                    "psis := r0*cos(ws*t) + (v0 + w x r0)/ws*sin(ws*t)\n"
+                    "thesis94 := (w . psi0)/W^2*w - sin(W*t)/W*(w x psis) - cos(W*t)/W^2*(w x (w x psis))"),
+              0)
+        << t.err.str();
+    const std::string printed = symrep::lang::print_value(t.val("u"), false);
+    // no (sqrt(w0^2 + |w|^2) - |w|) factor in a denominator (it stood there before, to the powers 1 and 2)
+    for (const char* f : {"*(sqrt(w0^2 + |w|^2) - |w|)", "/(sqrt(w0^2 + |w|^2) - |w|)", "(sqrt(w0^2 + |w|^2) - |w|)^"})
+        EXPECT_EQ(printed.find(f), std::string::npos) << f << " in " << printed;
+    EXPECT_TRUE(t.val("u == thesis94").as_bool());
+    EXPECT_TRUE(t.val("check(R, u)").as_bool());
+}
+
 // Resonance: forcing at the natural frequency gives secular terms exactly.
 TEST(CauchyProblem, ResonanceGivesSecularTerms) {
     test_session t;

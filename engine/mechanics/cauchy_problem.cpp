@@ -183,6 +183,69 @@ quasi_polynomial forcing_coefficient(const ex& c, const ex& t, const ex& v) {
     }
 }
 
+// c in Q(...)[q]/(q^2 - A) for its one square root q = sqrt(A) of an expression:
+// (M1 + M2 q)/D with M1, M2, D free of q (denominators rationalized by the
+// conjugate), each part normalized. The solution of the reduced Foucault problem
+// (VI.2.94) then has w0^2 where 1/(sqrt(w0^2 + |w|^2) - |w|) stood, and its
+// coefficients collapse to the thesis's. c unchanged with no or several roots.
+ex in_square_root_field(const ex& c) {
+    ex root;
+    for (auto it = c.preorder_begin(); it != c.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && !GiNaC::is_a<GiNaC::numeric>(it->op(0)) &&
+            GiNaC::is_a<GiNaC::numeric>(it->op(1)) && !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer()) {
+            const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(it->op(1)) * 2;
+            if (!k.is_integer()) return c;  // a cube root, ...
+            if (root.is_zero()) root = it->op(0);
+            else if (!root.is_equal(it->op(0))) return c;  // several roots: left as it is
+        }
+    if (root.is_zero() || root.has(GiNaC::I)) return c;
+    const GiNaC::symbol q;
+    struct to_q : GiNaC::map_function {
+        ex A, q;
+        ex operator()(const ex& x) override {
+            const ex y = x.map(*this);
+            if (GiNaC::is_a<GiNaC::power>(y) && y.op(0).is_equal(A) && GiNaC::is_a<GiNaC::numeric>(y.op(1))) {
+                const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(y.op(1)) * 2;
+                if (k.is_integer()) return GiNaC::pow(q, k);
+            }
+            return y;
+        }
+    } f;
+    f.A = root;
+    f.q = q;
+    const ex nd = GiNaC::normal(f(c)).numer_denom();
+    auto reduce = [&](const ex& p) {  // p mod q^2 - A, as (p0, p1): p0 + p1 q
+        const ex r = GiNaC::expand(GiNaC::rem(GiNaC::expand(p), GiNaC::pow(q, 2) - root, q, false));
+        return std::make_pair(r.coeff(q, 0), r.coeff(q, 1));
+    };
+    const auto [n0, n1] = reduce(nd.op(0));
+    const auto [d0, d1] = reduce(nd.op(1));
+    // (n0 + n1 q)/(d0 + d1 q) = (n0 + n1 q)(d0 - d1 q)/(d0^2 - d1^2 A)
+    const ex den = GiNaC::normal(d0 * d0 - d1 * d1 * root);
+    if (den.is_zero()) return c;
+    const ex m0 = GiNaC::normal((n0 * d0 - n1 * d1 * root) / den), m1 = GiNaC::normal((n1 * d0 - n0 * d1) / den);
+    return m0 + m1 * GiNaC::sqrt(root);
+}
+
+// Each coefficient of the functions of t in c (sin, cos, exp of t, powers of t)
+// brought into the field of its square root (in_square_root_field), then summed.
+ex simplified_square_roots(const ex& c, const ex& t) {
+    const ex e = GiNaC::expand(c);
+    std::map<ex, ex, GiNaC::ex_is_less> by_t;  // t-part -> its coefficient
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        ex tp = 1, rest = 1;
+        for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
+            const ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+            (f.has(t) ? tp : rest) *= f;
+        }
+        by_t[tp] += rest;
+    }
+    ex out = 0;
+    for (const auto& [tp, k] : by_t) out += in_square_root_field(k) * tp;
+    return out;
+}
+
 // sin(u), cos(u) with the sign of u chosen by the printed text of u (no leading
 // '-'): sin(-(w0 - |w|) t) -> -sin((w0 - |w|) t). GiNaC's own choice of the sign
 // of w0 - |w| follows its term order, which varies from run to run.
@@ -296,7 +359,8 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
     const bool omega_symbol = GiNaC::is_a<GiNaC::symbol>(F.Omega);
     const ex norm_w = F.axis.is_zero() ? ex(0) : norm(F.axis);
     auto back = [&](const ex& c) {
-        return positive_trig_arguments(normalize_trig_signs(omega_symbol ? c.subs(F.Omega == norm_w) : c), P.t);
+        return positive_trig_arguments(
+            normalize_trig_signs(omega_symbol ? simplified_square_roots(c, P.t).subs(F.Omega == norm_w) : c), P.t);
     };
     ex x = 0;
     for (const placeholder_coefficients& pc : S.terms) {
