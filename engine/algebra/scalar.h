@@ -163,11 +163,13 @@ inline GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
     return f(e);
 }
 
-/// Zero test of a rational function of symbols and square roots of non-numeric
-/// expressions: each sqrt(b) becomes a symbol q_b, and the numerator is reduced
-/// modulo q_b^2 - b (normal() alone treats sqrt(b) as an unrelated atom, so that
-/// sqrt(b)^2 - b would not cancel once it is split over a fraction).
-inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
+/// e with each odd power sqrt(b)^k of a non-numeric b written q_b^k, q_b a real
+/// symbol per base (`roots`: base and symbol, in order of appearance).
+struct square_roots_as_symbols {
+    GiNaC::ex e;
+    std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> roots;
+};
+inline square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e) {
     struct roots : GiNaC::map_function {
         std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> q;  // base, symbol (a real root)
         GiNaC::ex operator()(const GiNaC::ex& x) override {
@@ -184,7 +186,17 @@ inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
         }
     } r;
     const GiNaC::ex z = r(e);
-    if (r.q.empty()) return false;
+    return {z, r.q};
+}
+
+/// Zero test of a rational function of symbols and square roots of non-numeric
+/// expressions: each sqrt(b) becomes a symbol q_b, and the numerator is reduced
+/// modulo q_b^2 - b (normal() alone treats sqrt(b) as an unrelated atom, so that
+/// sqrt(b)^2 - b would not cancel once it is split over a fraction).
+inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
+    const square_roots_as_symbols r = with_square_roots_as_symbols(e);
+    const GiNaC::ex& z = r.e;
+    if (r.roots.empty()) return false;
     try {
         const GiNaC::ex n = GiNaC::expand(GiNaC::numer(GiNaC::normal(z)));
         // complex coefficients (I): the real and the imaginary part vanish separately
@@ -193,7 +205,7 @@ inline bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
         for (GiNaC::ex part : parts) {
             GiNaC::exmap atoms;  // functions and other non-polynomial parts as symbols
             part = GiNaC::expand(part).to_polynomial(atoms);
-            for (const auto& [b, s] : r.q) {
+            for (const auto& [b, s] : r.roots) {
                 // s^2 = N/D: the base may be a fraction (q^2 |B|^2/m^2 + ...), whose 1/m
                 // to_polynomial would make an unrelated atom; N and D are made polynomials
                 // apart, and the remainder has coefficients in the fractions of the rest
@@ -229,8 +241,11 @@ inline bool has_symbolic_square_root(const GiNaC::ex& e) {
 /// coordinates. The sum under the root is expanded, as log_modulus writes it, so
 /// that sqrt(x^2 + y^2) meets the modulus it came from.
 inline GiNaC::ex trig_of_arctangents(const GiNaC::ex& e) {
-    if (!e.has(GiNaC::atan2(GiNaC::wild(0), GiNaC::wild(1))) && !e.has(GiNaC::atan(GiNaC::wild())))
-        return e;
+    // one pass to see whether there is anything to do (tidy() calls this on every result)
+    bool any = false;
+    for (auto it = e.preorder_begin(); it != e.preorder_end() && !any; ++it)
+        any = GiNaC::is_the_function<GiNaC::atan2_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::atan_SERIAL>(*it);
+    if (!any) return e;
     struct rewrite : GiNaC::map_function {
         GiNaC::ex operator()(const GiNaC::ex& x) override {
             const GiNaC::ex y = x.map(*this);

@@ -190,10 +190,12 @@ void register_mechanics_builtins(registry& r) {
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
             const mechanics::solution_check k = mechanics::check(P, s);
             if (!k.residual_zero) c.out() << "check: the residual is " << print_ex(k.residual) << ", not 0\n";
-            if (k && k.rounding > 0)
-                c.out() << "check: 0 up to rounding (floating-point values): what remains is at most "
-                        << std::setprecision(2) << k.rounding << std::setprecision(6)
+            if (k && k.rounding > 0) {
+                std::ostringstream ratio;  // not on c.out(): its precision stays as it is
+                ratio << std::setprecision(2) << k.rounding;
+                c.out() << "check: 0 up to rounding (floating-point values): what remains is at most " << ratio.str()
                         << " times the largest term\n";
+            }
             for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
                 if (!k.initial_differences[m].is_zero())
                     c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "

@@ -189,34 +189,14 @@ quasi_polynomial forcing_coefficient(const ex& c, const ex& t, const ex& v) {
 // (VI.2.94) then has w0^2 where 1/(sqrt(w0^2 + |w|^2) - |w|) stood, and its
 // coefficients collapse to the thesis's. c unchanged with no or several roots.
 ex in_square_root_field(const ex& c) {
-    ex root;
-    for (auto it = c.preorder_begin(); it != c.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::power>(*it) && !GiNaC::is_a<GiNaC::numeric>(it->op(0)) &&
-            GiNaC::is_a<GiNaC::numeric>(it->op(1)) && !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer()) {
-            const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(it->op(1)) * 2;
-            if (!k.is_integer()) return c;  // a cube root, ...
-            if (root.is_zero()) root = it->op(0);
-            else if (!root.is_equal(it->op(0))) return c;  // several roots: left as it is
-        }
-    if (root.is_zero() || root.has(GiNaC::I)) return c;
-    const GiNaC::symbol q;
-    struct to_q : GiNaC::map_function {
-        ex A, q;
-        ex operator()(const ex& x) override {
-            const ex y = x.map(*this);
-            if (GiNaC::is_a<GiNaC::power>(y) && y.op(0).is_equal(A) && GiNaC::is_a<GiNaC::numeric>(y.op(1))) {
-                const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(y.op(1)) * 2;
-                if (k.is_integer()) return GiNaC::pow(q, k);
-            }
-            return y;
-        }
-    } f;
-    f.A = root;
-    f.q = q;
-    const ex nd = GiNaC::normal(f(c)).numer_denom();
+    const square_roots_as_symbols r = with_square_roots_as_symbols(c);
+    if (r.roots.size() != 1 || r.roots[0].first.has(GiNaC::I)) return c;  // none, or several: left as it is
+    const ex& root = r.roots[0].first;
+    const ex& q = r.roots[0].second;
+    const ex nd = GiNaC::normal(r.e).numer_denom();
     auto reduce = [&](const ex& p) {  // p mod q^2 - A, as (p0, p1): p0 + p1 q
-        const ex r = GiNaC::expand(GiNaC::rem(GiNaC::expand(p), GiNaC::pow(q, 2) - root, q, false));
-        return std::make_pair(r.coeff(q, 0), r.coeff(q, 1));
+        const ex m = GiNaC::expand(GiNaC::rem(GiNaC::expand(p), GiNaC::pow(q, 2) - root, q, false));
+        return std::make_pair(m.coeff(q, 0), m.coeff(q, 1));
     };
     const auto [n0, n1] = reduce(nd.op(0));
     const auto [d0, d1] = reduce(nd.op(1));
@@ -383,15 +363,15 @@ ex solve(const cauchy_problem& P) {
     return vector_solution(P, F, solve(F.ode, R, P.t));
 }
 
-double rounding_tolerance() { return std::pow(10.0, 5 - long(GiNaC::Digits)); }
-
-namespace {
-
-bool has_float_number(const ex& e) {
+bool has_float(const ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
         if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_crational()) return true;
     return false;
 }
+
+double rounding_tolerance() { return std::pow(10.0, 5 - long(GiNaC::Digits)); }
+
+namespace {
 
 // The largest coefficient of e (the entries of a matrix; the terms of a sum): each
 // term with t and every function call set to 1, evaluated; -1 when a term is not a
@@ -460,8 +440,8 @@ solution_check check(const cauchy_problem& P, const ex& s) {
         out.residual = P.expression.subs(sub);
         out.residual_zero = is_zero_scalar(out.residual);
     }
-    const bool floats = has_float_number(P.expression) || has_float_number(s) ||
-                        std::any_of(P.initial.begin(), P.initial.end(), has_float_number);
+    const bool floats = has_float(P.expression) || has_float(s) ||
+                        std::any_of(P.initial.begin(), P.initial.end(), has_float);
     if (!out.residual_zero && floats) {
         // the terms of E, each with the solution in: the residual is their sum
         const ex E = GiNaC::expand(P.expression);

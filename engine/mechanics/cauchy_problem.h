@@ -89,6 +89,9 @@ struct solution_check {
 /// Exact check (vector equality by components, see vector.h); with floating-point
 /// numbers, exact up to rounding (solution_check::rounding).
 solution_check check(const cauchy_problem& P, const GiNaC::ex& s);
+/// True when e holds a floating-point number (a value read as 9.81 or 1e-3).
+bool has_float(const GiNaC::ex& e);
+
 /// The relative size taken as rounding by check(): 10^(5 - Digits) (1e-12 at
 /// GiNaC's default of 17 digits: floats carry ~16, a few are lost in the sums).
 double rounding_tolerance();

@@ -15,12 +15,6 @@ using GiNaC::ex;
 
 namespace {
 
-bool has_float(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_crational()) return true;
-    return false;
-}
-
 bool has_symbol(const ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
         if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
