@@ -11,7 +11,7 @@
 #include <sstream>
 #include <vector>
 
-#include "io/interpreter.h"
+#include "lang/interpreter.h"
 #include "numeric/evaluator.h"
 #include "vector/vector.h"
 

@@ -28,8 +28,8 @@
 #include <sstream>
 #include <vector>
 
-#include "io/interpreter.h"
-#include "io/values.h"
+#include "lang/interpreter.h"
+#include "lang/values.h"
 #include "mechanics/scene.h"
 #include "numeric/evaluator.h"
 #include "numeric/reference.h"
@@ -182,7 +182,7 @@ void BM_MinimalModel_Eval(benchmark::State& state) {
 BENCHMARK(BM_MinimalModel_Eval)->DenseRange(0, 2 * n_scenes - 1);
 
 // Where the general form is singular at the values (w0 = 0), it has no compiled
-// form: eval takes its limit at every point (io/values.h, a series at each time).
+// form: eval takes its limit at every point (lang/values.h, a series at each time).
 void evaluate_by_limits(benchmark::State& state, const prepared& p) {
     const double T = scenes[state.range(0) % n_scenes].T;
     int i = 0;

@@ -33,8 +33,8 @@
 #include <readline/history.h>
 #include <readline/readline.h>
 
-#include "io/interpreter.h"
-#include "io/lexer.h"
+#include "lang/interpreter.h"
+#include "syntax/lexer.h"
 
 namespace symrep::repl {
 

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "io/interpreter.h"
-#include "io/lexer.h"
+#include "lang/interpreter.h"
+#include "syntax/lexer.h"
 #include "interactive.h"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/builtins.h"
+#include "lang/builtins.h"
 
 namespace symrep::test {
 

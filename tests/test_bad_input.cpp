@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "test_util.h"
+#include "core/interrupt.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,7 +16,7 @@
 #include <sstream>
 #include <thread>
 
-#include "io/interpreter.h"
+#include "lang/interpreter.h"
 #include "robustness_findings.h"
 #include "test_support.h"
 
@@ -295,7 +296,7 @@ TEST(BadInput, MatrixPlusNumber) {
 
 // With a time limit, a statement stuck in one GiNaC call (normal(), expand(),
 // factor(): they see no check_interrupt()) is stopped by the operator new of
-// io/allocation_interrupt.cpp at its deadline. The first two statements
+// core/allocation_interrupt.cpp at its deadline. The first two statements
 // (robustness_findings.h) ran for minutes in one GiNaC call; the third would too.
 TEST(BadInput, LongGinacCallsStopAtTheTimeLimit) {
     test::test_session t;

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "algebra/polynomial_algebra.h"
-#include "algebra/scalar.h"
-#include "io/builtins.h"
+#include "scalar/scalar.h"
+#include "lang/builtins.h"
 
 using namespace symrep;
 using namespace symrep::lang;

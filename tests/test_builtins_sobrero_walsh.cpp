@@ -10,7 +10,7 @@
 #include "algebra/sobrero.h"
 #include "algebra/walsh.h"
 #include "algebra/walsh_complex.h"
-#include "io/builtins.h"
+#include "lang/builtins.h"
 
 using namespace symrep;
 using namespace symrep::lang;

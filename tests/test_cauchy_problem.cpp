@@ -8,9 +8,10 @@
 #include <random>
 #include <sstream>
 
-#include "algebra/scalar.h"
-#include "io/printer.h"
+#include "scalar/scalar.h"
+#include "output/printer.h"
 #include "test_support.h"
+#include "lang/print_value.h"
 
 using namespace symrep;
 using namespace symrep::lang;

@@ -23,12 +23,12 @@
 #include "algebra/multicomplex.h"
 #include "algebra/multicomplex_indexing.h"
 #include "algebra/polynomial_structure.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "algebra/sobrero.h"
 #include "algebra/structure_algebra.h"
 #include "algebra/walsh.h"
 #include "algebra/walsh_complex.h"
-#include "io/error.h"
+#include "core/error.h"
 
 using namespace symrep;
 using GiNaC::ex;

@@ -12,8 +12,8 @@
 #include <set>
 #include <sstream>
 
-#include "io/interpreter.h"
-#include "io/parser.h"
+#include "lang/interpreter.h"
+#include "syntax/parser.h"
 #include "test_support.h"
 
 using namespace symrep::lang;

@@ -36,12 +36,12 @@
 
 #include "algebra/multicomplex.h"
 #include "algebra/multicomplex_double.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "algebra/sobrero.h"
 #include "algebra/walsh.h"
 #include "algebra/walsh_complex.h"
 #include "algebra/walsh_double.h"
-#include "io/error.h"
+#include "core/error.h"
 
 using namespace symrep;
 using vec = std::vector<double>;

@@ -16,7 +16,7 @@
 
 #include "algebra/element.h"
 #include "algebra/multicomplex.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "algebra/sobrero.h"
 #include "algebra/structure_algebra.h"
 #include "algebra/walsh.h"

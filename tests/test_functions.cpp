@@ -7,10 +7,10 @@
 #include "algebra/element.h"
 #include "algebra/polynomial_algebra.h"
 #include "algebra/polynomial_structure.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "gen_tables.h"
-#include "io/error.h"
-#include "io/printer.h"
+#include "core/error.h"
+#include "output/printer.h"
 #include "test_support.h"
 
 using namespace symrep;
@@ -300,7 +300,7 @@ TEST(Scalar, AbsTakesNumbersOut) {
     EXPECT_TRUE(t.ex("abs(-2*x*y) - 2*abs(x*y)").is_zero());
     EXPECT_TRUE(t.ex("abs(-3/4) - 3/4").is_zero());
     EXPECT_TRUE(t.ex("abs(x - y) - abs(x - y)").is_zero());
-    EXPECT_EQ(symrep::lang::print_ex(t.ex("abs(-x + y)")), "abs(-x + y)");  // a sum: as it is
+    EXPECT_EQ(symrep::output::print_ex(t.ex("abs(-x + y)")), "abs(-x + y)");  // a sum: as it is
 }
 
 // Exponentials meet each other in the zero test too (exp(x) exp(y) = exp(x + y)),

@@ -15,8 +15,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/interpreter.h"
-#include "io/lexer.h"
+#include "lang/interpreter.h"
+#include "core/interrupt.h"
+#include "syntax/lexer.h"
 #include "numeric/integrate.h"
 #include "test_util.h"
 
@@ -295,7 +296,7 @@ TEST(Interactive, CtrlCStopsALibraryCall) {
     terminal t(home.path);
     ASSERT_TRUE(t.ready()) << t.screen();
     // one GiNaC expand of about half a minute, which sees no check_interrupt():
-    // operator new (io/allocation_interrupt.cpp) stops it
+    // operator new (core/allocation_interrupt.cpp) stops it
     t.line("e := expand((a+b+c+d+f+g+h)^40)");
     std::this_thread::sleep_for(std::chrono::milliseconds(400));
     t.key("C-c");

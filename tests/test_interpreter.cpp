@@ -3,11 +3,13 @@
 
 #include <fstream>
 
-#include "io/printer.h"
+#include "output/printer.h"
 #include "test_support.h"
+#include "lang/print_value.h"
 
 using namespace symrep;
 using namespace symrep::lang;
+using namespace symrep::output;
 using symrep::test::same;
 using symrep::test::test_session;
 using GiNaC::ex;

@@ -1,8 +1,8 @@
 // tests/test_lexer_parser.cpp -- tokens, grammar, precedence, locations.
 #include <gtest/gtest.h>
 
-#include "io/lexer.h"
-#include "io/parser.h"
+#include "syntax/lexer.h"
+#include "syntax/parser.h"
 
 using namespace symrep::lang;
 

@@ -7,8 +7,8 @@
 #include <regex>
 #include <sstream>
 
-#include "io/interpreter.h"
-#include "io/values.h"
+#include "lang/interpreter.h"
+#include "lang/values.h"
 #include "numeric/reference.h"
 #include "numeric/stable_evaluator.h"
 #include "test_util.h"

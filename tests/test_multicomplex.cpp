@@ -12,9 +12,9 @@
 #include "algebra/element.h"
 #include "algebra/multicomplex.h"
 #include "algebra/multicomplex_indexing.h"
-#include "algebra/scalar.h"
-#include "io/builtins.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "lang/builtins.h"
+#include "core/error.h"
 
 using namespace symrep;
 using GiNaC::ex;

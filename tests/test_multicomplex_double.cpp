@@ -20,8 +20,8 @@
 
 #include "algebra/multicomplex.h"
 #include "algebra/multicomplex_double.h"
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 using namespace symrep;
 

@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "io/interpreter.h"
-#include "io/lexer.h"
-#include "io/printer.h"
+#include "lang/interpreter.h"
+#include "syntax/lexer.h"
+#include "output/printer.h"
 #include "test_util.h"
 #include "vector/vector.h"
+#include "lang/print_value.h"
 
 namespace {
 
@@ -79,12 +80,12 @@ TEST(Notation, PrinterWritesTheProductsInEitherNotation) {
     EXPECT_EQ(symrep::to_string(v.ex("norm(w)^2*(w . r0)"), notation::unicode), "(r0 · w)*|w|^2");
     {
         notation_scope u(notation::unicode);
-        EXPECT_EQ(symrep::lang::print_ex(v.ex("w x r0")), "-(r0 × w)");
+        EXPECT_EQ(symrep::output::print_ex(v.ex("w x r0")), "-(r0 × w)");
         // a problem prints its equation in the notation too
         EXPECT_EQ(symrep::lang::print_value(v.s.evaluate("ode(r' + w x r = 0, r(0) = r0)")),
                   "ode(-(r × w) + r' = 0, r(0) = r0)");
     }
-    EXPECT_EQ(symrep::lang::print_ex(v.ex("w x r0")), "-(r0 x w)");
+    EXPECT_EQ(symrep::output::print_ex(v.ex("w x r0")), "-(r0 x w)");
 }
 
 // The unicode text is the ascii text with the two signs replaced: the same terms
@@ -108,13 +109,13 @@ TEST(Notation, PrintedTextReadsBackAsTheSameValue) {
         vector_session v;
         for (const std::string& text : corpus) {
             const GiNaC::ex e = v.ex(text);
-            const std::string printed = symrep::lang::print_ex(e);
+            const std::string printed = symrep::output::print_ex(e);
             const GiNaC::ex back = v.ex(printed);
             EXPECT_TRUE(symrep::equal(e, back)) << text << "\n printed: " << printed;
             // reading may only combine literal arithmetic (t^2*[0, 0, -10]/2 -> [0, 0, -5*t^2]):
             // from then on the text is a fixed point
-            const std::string again = symrep::lang::print_ex(back);
-            EXPECT_EQ(symrep::lang::print_ex(v.ex(again)), again) << text;
+            const std::string again = symrep::output::print_ex(back);
+            EXPECT_EQ(symrep::output::print_ex(v.ex(again)), again) << text;
             if (printed.find('[') == std::string::npos) {
                 EXPECT_EQ(again, printed) << text;
             }

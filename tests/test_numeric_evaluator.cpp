@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "numeric/evaluator.h"
 
 using namespace symrep;

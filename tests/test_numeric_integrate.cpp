@@ -14,7 +14,7 @@
 #include <random>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "numeric/integrate.h"
 #include "numeric/verify.h"
 

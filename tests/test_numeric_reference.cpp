@@ -4,7 +4,7 @@
 #include <cln/real.h>
 #include <cmath>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "numeric/reference.h"
 
 using namespace symrep;

@@ -9,8 +9,8 @@
 #include <boost/numeric/odeint.hpp>
 #include <gtest/gtest.h>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 #include "mechanics/operator_ode.h"
 
 using namespace symrep;

@@ -1,5 +1,5 @@
-// tests/test_plot.cpp -- plot, trajectory and hodograph (io/builtins_plot.cpp,
-// numeric/plot.cpp): the pictures gnuplot writes, and the messages for bad input
+// tests/test_plot.cpp -- plot, trajectory and hodograph (lang/builtins_plot.cpp,
+// output/plot.cpp): the pictures gnuplot writes, and the messages for bad input
 // and for a missing gnuplot.
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 
 #include "algebra/polynomial_algebra.h"
 #include "algebra/polynomial_structure.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "gen_tables.h"
-#include "io/error.h"
+#include "core/error.h"
 
 using namespace symrep;
 using namespace symrep::test;

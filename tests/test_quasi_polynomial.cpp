@@ -6,7 +6,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "mechanics/quasi_polynomial.h"
 
 using namespace symrep;

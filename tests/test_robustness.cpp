@@ -45,7 +45,8 @@
 #include <string>
 #include <vector>
 
-#include "io/interpreter.h"
+#include "lang/interpreter.h"
+#include "core/interrupt.h"
 #include "robustness_findings.h"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -240,7 +241,7 @@ void prepare(session& s, const std::string& setup) {
 
 /// The worker: runs inputs[first, last) in a fresh session and exits (status 0;
 /// 3 when the leak check of the sanitized build found a leak). An input that was
-/// stopped inside a GiNaC call (operator new threw, io/allocation_interrupt.cpp)
+/// stopped inside a GiNaC call (operator new threw, core/allocation_interrupt.cpp)
 /// ends the worker after it, and a leak is then status 6: GiNaC is not exception
 /// safe everywhere (add::recombine_pair_to_ex, for one, loses the object it has
 /// just made), so such a leak may be GiNaC's; the parent reruns the inputs before

@@ -1,8 +1,8 @@
 // Tests of the algebra of K = w x (thesis VI.1.12-15) as P(X^3 + Omega^2 X).
 #include <gtest/gtest.h>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 #include "mechanics/rotation_operator_algebra.h"
 
 using namespace symrep;

@@ -11,7 +11,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "rules/rules.h"
 #include "test_support.h"
 #include "vector/vector.h"

@@ -13,8 +13,8 @@
 #include <random>
 #include <sstream>
 
-#include "algebra/scalar.h"
-#include "io/values.h"
+#include "scalar/scalar.h"
+#include "lang/values.h"
 #include "mechanics/scene.h"
 #include "test_support.h"
 #include "vector/vector.h"
@@ -64,7 +64,7 @@ struct solved_scene {
 // The general solution with the values put in; where it is singular there, its
 // exact limit: each zero scalar value approached by lambda -> 0 (the lambda^0 term
 // of the series, after the 1/lambda terms are seen to cancel; cos(-u) read as
-// cos(u) so that they do), or eval's limit for a zero vector (io/values.h).
+// cos(u) so that they do), or eval's limit for a zero vector (lang/values.h).
 ex general_with_values(const ex& g, const data_values& d, const mechanics::parameter_values& v) {
     try {
         return mechanics::put_values(g, v);

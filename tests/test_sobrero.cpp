@@ -9,7 +9,7 @@
 #include "algebra/element.h"
 #include "algebra/sobrero.h"
 #include "algebra/walsh_double.h"
-#include "io/error.h"
+#include "core/error.h"
 
 using namespace symrep;
 using GiNaC::ex;

@@ -3,10 +3,10 @@
 
 #include "algebra/element.h"
 #include "algebra/polynomial_algebra.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "algebra/structure_algebra.h"
 #include "gen_tables.h"
-#include "io/error.h"
+#include "core/error.h"
 
 using namespace symrep;
 using namespace symrep::test;

@@ -12,8 +12,8 @@
 
 #include "algebra/algebra.h"
 #include "algebra/element.h"
-#include "io/interpreter.h"
-#include "io/parser.h"
+#include "lang/interpreter.h"
+#include "syntax/parser.h"
 
 namespace symrep::test {
 

@@ -34,8 +34,8 @@
 #include <string>
 #include <vector>
 
-#include "io/interpreter.h"
-#include "io/parser.h"
+#include "lang/interpreter.h"
+#include "syntax/parser.h"
 #include "test_support.h"
 #include "test_util.h"
 

@@ -5,7 +5,7 @@
 #include <random>
 #include <string>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "vector/vector.h"
 
 using GiNaC::ex;

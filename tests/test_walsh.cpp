@@ -10,9 +10,9 @@
 #include "algebra/walsh.h"
 #include "algebra/walsh_complex.h"
 #include "algebra/walsh_double.h"
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "algebra/walsh_hadamard.h"
-#include "io/error.h"
+#include "core/error.h"
 
 using namespace symrep;
 using GiNaC::ex;

@@ -42,8 +42,8 @@
 #include <string>
 #include <vector>
 
-#include "io/interpreter.h"
-#include "io/values.h"
+#include "lang/interpreter.h"
+#include "lang/values.h"
 #include "numeric/evaluator.h"
 #include "numeric/integrate.h"
 #include "numeric/reference.h"

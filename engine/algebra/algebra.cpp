@@ -3,8 +3,9 @@
 
 #include <sstream>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
+#include "core/interrupt.h"
 
 namespace symrep {
 

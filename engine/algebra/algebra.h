@@ -1,6 +1,12 @@
 // symrep/algebra/algebra.h -- a finite-dimensional commutative, associative,
 // unital real algebra A_n (thesis II.1), with exact coefficients.
 //
+// algebra/ holds the algebras of Ch. II-III: the general algebra from structure
+// constants, the multicomplex, Sobrero, Walsh and complex Walsh algebras and
+// the polynomial algebras, exact and double, with their elements and the
+// functions on them (exp, log, inverse, minimal polynomial, ...). It includes
+// core/ and scalar/ (docs/architecture.md).
+//
 // An algebra is known by its product on coefficient vectors in a fixed basis
 // {eps_1..eps_n} (II.1.1-2). Everything else has a general default derived from
 // the product through the canonical matrix [w] (II.1.3-4):

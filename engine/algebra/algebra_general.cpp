@@ -4,8 +4,9 @@
 #include "algebra/algebra.h"
 
 #include "algebra/exact_linear.h"
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
+#include "core/expression_size.h"
 
 namespace symrep {
 

@@ -1,8 +1,8 @@
 // symrep/algebra/element.cpp
 #include "algebra/element.h"
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 
 namespace symrep {
 

@@ -19,10 +19,10 @@
 #include <sstream>
 
 #include "algebra/algebra.h"
-#include "algebra/cplx.h"
+#include "scalar/cplx.h"
 #include "algebra/exact_linear.h"
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep {
 

@@ -7,8 +7,9 @@
 #include "algebra/multicomplex_double.h"
 #include "algebra/multicomplex_indexing.h"
 #include "algebra/multicomplex_transform.h"
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
+#include "core/expression_size.h"
 
 namespace symrep {
 

@@ -30,7 +30,7 @@
 #include <memory>
 
 #include "algebra/algebra.h"
-#include "algebra/cplx.h"
+#include "scalar/cplx.h"
 
 namespace symrep {
 

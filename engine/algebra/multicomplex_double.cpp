@@ -8,7 +8,7 @@
 
 #include "algebra/multicomplex_indexing.h"
 #include "algebra/multicomplex_transform.h"
-#include "io/error.h"
+#include "core/error.h"
 
 namespace symrep {
 

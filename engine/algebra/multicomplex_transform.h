@@ -18,8 +18,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "algebra/cplx.h"
-#include "algebra/scalar.h"
+#include "scalar/cplx.h"
+#include "scalar/scalar.h"
 #include "algebra/walsh_hadamard.h"
 
 namespace symrep {

@@ -3,8 +3,8 @@
 
 #include <sstream>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep {
 

@@ -17,8 +17,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "algebra/cplx.h"
-#include "algebra/scalar.h"
+#include "scalar/cplx.h"
+#include "scalar/scalar.h"
 
 namespace symrep::sobrero_math {
 

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "algebra/exact_linear.h"
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep {
 

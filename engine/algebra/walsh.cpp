@@ -3,9 +3,10 @@
 
 #include <sstream>
 
-#include "algebra/scalar.h"
+#include "scalar/scalar.h"
 #include "algebra/walsh_kernel.h"
-#include "io/error.h"
+#include "core/error.h"
+#include "core/expression_size.h"
 
 namespace symrep {
 

@@ -3,10 +3,11 @@
 
 #include <sstream>
 
-#include "algebra/cplx.h"
-#include "algebra/scalar.h"
+#include "scalar/cplx.h"
+#include "scalar/scalar.h"
 #include "algebra/walsh_kernel.h"
-#include "io/error.h"
+#include "core/error.h"
+#include "core/expression_size.h"
 
 namespace symrep {
 

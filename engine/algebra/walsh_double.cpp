@@ -5,10 +5,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "algebra/cplx.h"
+#include "scalar/cplx.h"
 #include "algebra/sobrero_kernel.h"
 #include "algebra/walsh_kernel.h"
-#include "io/error.h"
+#include "core/error.h"
 
 namespace symrep {
 

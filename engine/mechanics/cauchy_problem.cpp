@@ -5,8 +5,8 @@
 #include <cmath>
 #include <map>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 #include "vector/vector.h"
 
 namespace symrep::mechanics {

@@ -2,6 +2,11 @@
 // (or scalar) function of t, as a user writes it, and its exact solution by
 // the operator solver (thesis VI.1.26-38, 47-57, 62-67, 68-86).
 //
+// mechanics/ solves the rotating-frame problems of Ch. VI: the rotation
+// operator algebra, quasi-polynomial forcing, operator ODEs, the Cauchy problem
+// (this header) and scenes with values. It includes core/, scalar/, algebra/,
+// vector/ and numeric/ (docs/architecture.md).
+//
 // The problem is   E(x, x', ..., x^(M), t) = 0,   x^(m)(0) = X_m  (m < M),
 // with E linear in the unknowns x^(m). Its operator part must be a polynomial
 // in one operator K = w x (w a constant vector symbol, the same in every term):

@@ -4,8 +4,8 @@
 #include <map>
 
 #include "algebra/exact_linear.h"
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep::mechanics {
 

@@ -10,8 +10,8 @@
 //   of the integral and produces the secular powers of t exactly.
 #include "mechanics/quasi_polynomial.h"
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep::mechanics {
 

@@ -35,7 +35,7 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/cplx.h"
+#include "scalar/cplx.h"
 
 namespace symrep::mechanics {
 

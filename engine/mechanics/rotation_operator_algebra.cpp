@@ -1,8 +1,8 @@
 // symrep/mechanics/rotation_operator_algebra.cpp -- K = w x as P(X^3 + Omega^2 X).
 #include "mechanics/rotation_operator_algebra.h"
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 
 namespace symrep::mechanics {
 

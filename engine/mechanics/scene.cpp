@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <functional>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 #include "numeric/reference.h"
 #include "vector/vector.h"
 

@@ -9,7 +9,7 @@
 // w x P = 0 (P along w, or w = 0), X^2 + |w|^2 when w . P = 0, X^3 + |w|^2 X
 // otherwise, 1 when P = 0. The scene's algebra is R[X]/(m) with m the lcm of
 // the m_P. classify() decides these relations for the values, exactly (the zero
-// test of algebra/scalar.h by components; a floating-point residue counts as not
+// test of scalar/scalar.h by components; a floating-point residue counts as not
 // 0, so floating-point data can only keep the general model), drops the terms of
 // the equation that vanish for the values, and puts the exact values (no
 // floating-point number in them) into the coefficients; floating-point values

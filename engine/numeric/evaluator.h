@@ -1,5 +1,11 @@
 // symrep/numeric/evaluator.h -- compile closed forms into fast double evaluators.
 //
+// numeric/ is the double-precision side of the engine: closed forms compiled
+// to programs (compile.cpp, evaluator.cpp), the stable evaluator with
+// precision tiers, the exact reference values, and integration with
+// Boost.Odeint for verification. It includes core/ and scalar/
+// (docs/architecture.md).
+//
 // compile() walks GiNaC expressions once and emits a flat program: a vector of
 // three-address instructions over a register file of doubles. Structurally equal
 // subtrees are computed once (hash-consing on GiNaC's ex hash and ex::is_equal),

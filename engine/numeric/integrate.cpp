@@ -9,7 +9,8 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "io/error.h"
+#include "core/error.h"
+#include "core/interrupt.h"
 
 namespace symrep::num {
 

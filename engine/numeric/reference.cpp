@@ -11,7 +11,7 @@
 #include <limits>
 #include <sstream>
 
-#include "io/error.h"
+#include "core/error.h"
 
 namespace symrep::num {
 

@@ -9,7 +9,7 @@
 #include <limits>
 #include <type_traits>
 
-#include "io/error.h"
+#include "core/error.h"
 #include "numeric/reference.h"
 
 namespace symrep::num {

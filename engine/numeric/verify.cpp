@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "io/error.h"
+#include "core/error.h"
 
 namespace symrep::num {
 

@@ -1,5 +1,6 @@
 // symrep/rules/rules.cpp -- rule files, the matcher and the rewriter.
 #include "rules/rules.h"
+#include "core/interrupt.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,8 +11,8 @@
 #include <mutex>
 #include <sstream>
 
-#include "algebra/scalar.h"
-#include "io/parser.h"
+#include "scalar/scalar.h"
+#include "syntax/parser.h"
 #include "vector/vector.h"
 
 namespace symrep::rules {

@@ -1,13 +1,16 @@
 // symrep/rules/rules.h -- rewrite rules over vector expressions, read from
 // plain-text rule files (rules/vector.rules) at run time.
 //
+// engine/rules/ reads rule files and applies them; it includes core/, scalar/,
+// syntax/ and vector/ (docs/architecture.md).
+//
 // Why a representation of its own
 // --------------------------------
 // GiNaC evaluates an expression when it is built: cross(a, a) is 0 at once,
 // dot(b, a) becomes dot(a, b), cross(b, a) becomes -cross(a, b), scalar factors
 // leave cross/dot. A rule side read into GiNaC would therefore not be the
 // pattern that was written. Rule sides are parsed with the language's parser
-// (io/parser.h) and converted into `pattern` trees that nothing evaluates; the
+// (syntax/parser.h) and converted into `pattern` trees that nothing evaluates; the
 // matcher walks a pattern and a GiNaC expression side by side and knows that
 // cross is anticommutative, dot commutative and the triple product alternating,
 // so argument orders chosen by GiNaC do not matter.
@@ -34,7 +37,7 @@
 
 #include <ginac/ginac.h>
 
-#include "io/error.h"
+#include "core/error.h"
 
 namespace symrep::rules {
 

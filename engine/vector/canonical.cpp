@@ -19,8 +19,8 @@
 #include <map>
 #include <string>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 #include "vector/vector.h"
 #include "vector/vector_internal.h"
 

@@ -8,8 +8,8 @@
 #include <mutex>
 #include <random>
 
-#include "algebra/scalar.h"
-#include "io/error.h"
+#include "scalar/scalar.h"
+#include "core/error.h"
 #include "vector/vector_internal.h"
 
 namespace symrep {

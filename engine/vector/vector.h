@@ -1,5 +1,9 @@
 // symrep/vector/vector.h -- coordinate-free 3-vectors (thesis Ch. VI).
 //
+// vector/ holds abstract vectors, cross, dot and triple products, their
+// canonical form and their printing in the thesis's notation. It includes
+// core/ and scalar/ (docs/architecture.md).
+//
 // Representation
 // --------------
 // * An abstract vector is a GiNaC::realsymbol that is registered as a vector in

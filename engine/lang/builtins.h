@@ -1,0 +1,101 @@
+// symrep/lang/builtins.h -- the functions callable from symrep scripts.
+//
+// Each builtin carries its own documentation (signature, meaning, the thesis
+// equation it implements, an example); `symrep --doc` renders the registry as
+// Markdown and docs/language.md is checked against it by a test, so the
+// reference and the program never disagree.
+//
+// Builtins are registered explicitly (no static initializers, which a static
+// library would drop): the interpreter calls every register_* function below.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "lang/value.h"
+
+namespace symrep::lang {
+
+/// What a builtin may ask of the running session.
+class context {
+public:
+    virtual ~context() = default;
+    /// The session's real symbol with this name (created on first use). Returned as an
+    /// ex: copying a GiNaC::realsymbol into a GiNaC::symbol would slice it into a
+    /// different (complex) symbol.
+    virtual GiNaC::ex symbol(const std::string& name) = 0;
+    /// Where print() and friends write.
+    virtual std::ostream& out() = 0;
+};
+
+struct builtin {
+    std::string name;
+    std::string signature;  ///< e.g. "inverse(w)"
+    std::string summary;    ///< what it does, one or two sentences
+    std::string equation;   ///< thesis equation(s), e.g. "(III.1.57)"; may be empty
+    std::string example;    ///< a statement that runs, e.g. "inverse(mc(1, [1,2,0,0]))"
+    std::string section;    ///< grouping in the reference, e.g. "Multicomplex algebra"
+    std::size_t min_args = 0;
+    std::size_t max_args = 0;  ///< SIZE_MAX for variadic
+    std::function<value(const std::vector<value>& args, context& ctx)> fn;
+};
+
+class registry {
+public:
+    /// Adds a builtin; a duplicate name is a programming error (std::logic_error).
+    void add(builtin b);
+    const builtin* find(const std::string& name) const;
+    /// All builtins, sorted by section then name.
+    std::vector<const builtin*> all() const;
+
+private:
+    std::map<std::string, builtin> table_;
+};
+
+/// The body of a builtin: it receives the builtin itself (for the arg_* checkers' messages).
+using builtin_body = std::function<value(const builtin&, const std::vector<value>&, context&)>;
+/// Registers a builtin in `section` whose body receives the builtin itself.
+void add_builtin(registry& r, const char* section, std::string name, std::string signature, std::string summary,
+                 std::string equation, std::string example, std::size_t min_args, std::size_t max_args,
+                 builtin_body body);
+
+// --- argument checking: each throws type_error naming the function and argument
+const element& arg_element(const std::vector<value>& args, std::size_t i, const builtin& b);
+const algebra_ptr& arg_algebra(const std::vector<value>& args, std::size_t i, const builtin& b);
+const GiNaC::ex& arg_ex(const std::vector<value>& args, std::size_t i, const builtin& b);
+const list& arg_list(const std::vector<value>& args, std::size_t i, const builtin& b);
+const std::string& arg_string(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// A non-negative integer argument (exact integer expression).
+long arg_int(const std::vector<value>& args, std::size_t i, const builtin& b, long min, long max);
+/// A GiNaC symbol argument (a reference into args: keep it as a reference, since
+/// copying a realsymbol into a GiNaC::symbol slices it).
+const GiNaC::symbol& arg_symbol(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// A list of expressions (each entry must be an expression).
+std::vector<GiNaC::ex> arg_ex_list(const std::vector<value>& args, std::size_t i, const builtin& b);
+/// True when e is or holds a matrix.
+bool has_matrix(const GiNaC::ex& e);
+
+// --- registration, one function per part of the engine ---------------------------
+void register_core_builtins(registry& r);         // lang/builtins_core.cpp: print, subs, diff, expand, ...
+void register_algebra_builtins(registry& r);      // lang/builtins_algebra.cpp: generic algebras, elements
+void register_multicomplex_builtins(registry& r); // lang/builtins_multicomplex.cpp
+void register_sobrero_builtins(registry& r);      // lang/builtins_sobrero.cpp
+void register_walsh_builtins(registry& r);        // lang/builtins_walsh.cpp
+void register_polynomial_builtins(registry& r);   // lang/builtins_polynomial.cpp
+void register_output_builtins(registry& r);       // lang/builtins_output.cpp
+void register_check_builtins(registry& r);        // lang/builtins_check.cpp: expect, expect_near
+void register_mechanics_builtins(registry& r);    // lang/builtins_mechanics.cpp: ode, check, eval, verify
+void register_rules_builtins(registry& r);        // lang/builtins_rules.cpp: load_rules, rewrite, rules
+void register_plot_builtins(registry& r);         // lang/builtins_plot.cpp: plot, trajectory, hodograph
+
+/// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).
+value solve_problem(const value& p);
+/// solve(P, values): the scene's exact solution in its smallest model; the model
+/// report goes to c.out() (lang/builtins_mechanics.cpp, mechanics/scene.h).
+value solve_scene(const builtin& b, const std::vector<value>& a, context& c);
+
+}  // namespace symrep::lang

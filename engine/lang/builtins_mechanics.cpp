@@ -1,0 +1,304 @@
+// symrep/lang/builtins_mechanics.cpp -- vectors, Cauchy problems and their exact
+// solutions (thesis Ch. VI), with the numeric backend behind eval and verify.
+//
+//   vector w, r0, v0
+//   P := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)
+//   s := solve(P)                      coordinate-free closed form
+//   check(P, s)                        exact: residual and initial conditions
+//   verify(P, s, values, T)            against Boost.Odeint on [0, T]
+//   eval(s, values, t = 3600)          numbers
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "scalar/scalar.h"
+#include "lang/builtins.h"
+#include "output/printer.h"
+#include "lang/values.h"
+#include "mechanics/cauchy_problem.h"
+#include "mechanics/rotation_operator_algebra.h"
+#include "mechanics/scene.h"
+#include "numeric/reference.h"
+#include "numeric/verify.h"
+#include "vector/vector.h"
+
+namespace symrep::lang {
+
+using output::print_ex;
+
+using GiNaC::ex;
+using args_t = std::vector<value>;
+
+namespace {
+
+const char* const section = "Vectors and mechanics";
+
+void add(registry& r, std::string name, std::string sig, std::string summary, std::string eq, std::string example,
+         std::size_t mn, std::size_t mx, builtin_body fn) {
+    add_builtin(r, section, std::move(name), std::move(sig), std::move(summary), std::move(eq), std::move(example),
+                mn, mx, std::move(fn));
+}
+
+ex vector_arg(const args_t& a, std::size_t i, const builtin& b) {
+    const value& v = a[i];
+    if (v.is_list() && v.as_list().size() == 3 && v.as_list()[0].is_ex() && v.as_list()[1].is_ex() &&
+        v.as_list()[2].is_ex())
+        return vector_literal(v.as_list()[0].as_ex(), v.as_list()[1].as_ex(), v.as_list()[2].as_ex());
+    const ex& e = arg_ex(a, i, b);
+    if (!e.is_zero() && !is_vector(e))
+        throw type_error(b.name + ": argument " + std::to_string(i + 1) + " must be a vector, not the scalar " +
+                         print_ex(e) + " (usage: " + b.signature + ")");
+    return e;
+}
+
+const mechanics::cauchy_problem& problem_arg(const args_t& a, std::size_t i, const builtin& b) {
+    if (!a[i].is_problem())
+        throw type_error(b.name + ": argument " + std::to_string(i + 1) + " must be a problem made by ode(...), not " +
+                         a[i].a_kind() + " (usage: " + b.signature + ")");
+    return a[i].as_problem();
+}
+
+value numbers(const ex& c, const builtin& b) {
+    if (!GiNaC::is_a<GiNaC::matrix>(c)) return value(ex(to_double(c, b, "the result")));
+    list l;
+    for (const ex& x : components(c)) l.push_back(value(ex(to_double(x, b, "the result"))));
+    return l;
+}
+
+std::string seconds(double s) {
+    std::ostringstream os;
+    os << std::setprecision(3);
+    if (s < 1e-3) os << s * 1e6 << " us";
+    else if (s < 1) os << s * 1e3 << " ms";
+    else os << s << " s";
+    return os.str();
+}
+
+/// Where the stable evaluator raised the precision of the closed form (numeric/stable_evaluator.h).
+std::string precision_note(const num::verify_result& v) {
+    const auto& n = v.closed_form_tiers;
+    if (n[1] + n[2] == 0) return "";
+    std::ostringstream os;
+    os << " (";
+    if (n[1]) os << n[1] << " points in binary128";
+    if (n[1] && n[2]) os << ", ";
+    if (n[2]) os << n[2] << " in multiprecision";
+    os << ")";
+    return os.str();
+}
+
+}  // namespace
+
+value solve_problem(const value& p) { return value(mechanics::solve(p.as_problem())); }
+
+namespace {
+
+// [w = [0, 0, W], g = [a, b, 0], ...] as the values of a scene (as for eval)
+mechanics::parameter_values scene_values(const args_t& a, std::size_t i, const builtin& b) {
+    const data_values d = read_values(a[i], b, i);
+    return {d.vectors, d.scalars};
+}
+
+}  // namespace
+
+value solve_scene(const builtin& b, const args_t& a, context& c) {
+    const auto& P = problem_arg(a, 0, b);
+    const mechanics::scene_solution s = mechanics::solve(P, scene_values(a, 1, b));
+    std::istringstream report(s.model.report());
+    for (std::string line; std::getline(report, line);) c.out() << b.name << ": " << line << "\n";
+    return value(s.x);
+}
+
+void register_mechanics_builtins(registry& r) {
+    add(r, "cross", "cross(a, b)", "The cross product a x b (same as the operator x).", "",
+        "vector a, b\ncross(a, b) + cross(b, a)", 2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(cross(vector_arg(a, 0, b), vector_arg(a, 1, b)));
+        });
+    add(r, "dot", "dot(a, b)", "The scalar product a . b (same as the operator .).", "",
+        "vector a\ndot(a, [1, 0, 0])", 2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(dot(vector_arg(a, 0, b), vector_arg(a, 1, b)));
+        });
+    add(r, "triple", "triple(a, b, c)", "The scalar triple product [a, b, c] = a . (b x c).", "",
+        "vector a, b, c\ntriple(a, b, c) + triple(b, a, c)", 3, 3, [](const builtin& b, const args_t& a, context&) {
+            return value(triple(vector_arg(a, 0, b), vector_arg(a, 1, b), vector_arg(a, 2, b)));
+        });
+    add(r, "norm", "norm(a)", "The length |a| = sqrt(a . a) of a vector.", "",
+        "vector a\nnorm(a)^2", 1, 1, [](const builtin& b, const args_t& a, context&) {
+            return value(norm(vector_arg(a, 0, b)));
+        });
+    add(r, "skew", "skew(w)",
+        "The skew matrix of w = [w1, w2, w3] (its matrix representation: skew(w) * x = w x x for columns x).",
+        "(VI.1.1-11)", "skew([1, 2, 3]) * matrix([[4], [5], [6]])", 1, 1,
+        [](const builtin& b, const args_t& a, context&) {
+            const ex w = vector_arg(a, 0, b);
+            if (!is_vector_literal(w))
+                throw type_error(b.name + ": argument 1 must be a vector given by its components [w1, w2, w3]");
+            const ex x = w.op(0), y = w.op(1), z = w.op(2);
+            return value(ex(GiNaC::matrix(3, 3, GiNaC::lst{0, -z, y, z, 0, -x, -y, x, 0})));
+        });
+    add(r, "rotation_operator", "rotation_operator(w, t, x)",
+        "exp(-K t) x with K = w x, derived by the algebra layer from the minimal polynomial X^3 + |w|^2 X of K "
+        "(Hermite interpolation, Thm II.2.3): x - sin(|w| t)/|w| w x x + (1 - cos(|w| t))/|w|^2 w x (w x x), "
+        "the solution of x' + w x x = 0 (Rodrigues).",
+        "(VI.1.13-15)", "vector w, x\nrotation_operator(w, t, x)", 3, 3,
+        [](const builtin& b, const args_t& a, context&) {
+            const ex w = vector_arg(a, 0, b), t = arg_ex(a, 1, b), x = vector_arg(a, 2, b);
+            if (w.is_zero()) return value(x);
+            const GiNaC::possymbol W("|w|");
+            const mechanics::rotation_operator_algebra R(W);
+            const element E = R.exp_minus_Kt(t);
+            auto c = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
+            return value(c(0) * x + c(1) * cross(w, x) + c(2) * cross(w, cross(w, x)));
+        });
+    add(r, "vector_series", "vector_series(e, w, n)",
+        "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "
+        "eps = 1): the small-rotation approximations of the thesis, derived from the exact solution.",
+        "(VI.1.51-55)", "vector w, g\nvector_series(sin(norm(w)*t)/norm(w)*(w x g), w, 3)", 3, 3,
+        [](const builtin& b, const args_t& a, context&) {
+            const ex& e = arg_ex(a, 0, b);
+            const ex& w = arg_ex(a, 1, b);
+            if (!is_vector_symbol(w))
+                throw type_error(b.name + ": argument 2 must be a vector symbol (usage: " + b.signature + ")");
+            const long n = arg_int(a, 2, b, 0, 60);
+            // |w| and w . w through a positive symbol W, so that |eps w| = eps W
+            const GiNaC::possymbol eps("eps"), W("W");
+            const ex ew = e.subs(norm(w) == W).subs(dot(w, w) == GiNaC::pow(W, 2));
+            const ex es = subs_vectors(ew, {{w, eps * w}}).subs(W == eps * W);
+            const ex ser = GiNaC::series_to_poly(es.series(eps == 0, int(n) + 1));
+            return value(GiNaC::expand(ser.subs(eps == 1)).subs(W == norm(w)));
+        });
+    add(r, "ode", "ode(equation, x(0) = x0, x'(0) = v0, ...)",
+        "A linear Cauchy problem for x(t): the equation (x, x', x'' ... stand for the unknown and its "
+        "derivatives in t) and one initial condition per order. x is a vector when an initial value is. "
+        "The operator part must be a polynomial in one K = w x (terms c x, c w x x, c w x (w x x), "
+        "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. The problem is "
+        "checked when it is made.",
+        "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)",
+        "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
+        [](const builtin& b, const args_t&, context&) -> value {
+            throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
+        });
+    add(r, "check", "check(P, s [, values])",
+        "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "
+        "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md; with "
+        "floating-point values, 0 up to rounding: at most 10^(5 - Digits) times the largest term, and said); "
+        "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
+        "values put in: the check of a scene's solution solve(P, values).",
+        "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
+            const auto& P0 = problem_arg(a, 0, b);
+            const mechanics::cauchy_problem P =
+                a.size() == 3 ? mechanics::with_values(P0, scene_values(a, 2, b)) : P0;
+            const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
+            const mechanics::solution_check k = mechanics::check(P, s);
+            if (!k.residual_zero) c.out() << "check: the residual is " << print_ex(k.residual) << ", not 0\n";
+            if (k && k.rounding > 0) {
+                std::ostringstream ratio;  // not on c.out(): its precision stays as it is
+                ratio << std::setprecision(2) << k.rounding;
+                c.out() << "check: 0 up to rounding (floating-point values): what remains is at most " << ratio.str()
+                        << " times the largest term\n";
+            }
+            for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
+                if (!k.initial_differences[m].is_zero())
+                    c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "
+                            << print_ex(k.initial_differences[m]) << "\n";
+            return value(bool(k));
+        });
+    add(r, "model", "model(P, values)",
+        "The smallest exact model of the scene (P made by ode(...), values as for eval): how each data "
+        "vector relates to the operator K = w x (0, along w, perpendicular to w, general) and the algebra "
+        "R[X]/(m_P) of its local minimal polynomial, the terms that vanish for the values, the scene's "
+        "algebra (the lcm of the m_P), and the method with its reason; the report solve(P, values) prints, "
+        "as a string, without solving.",
+        "(II.1.23-24), (VI.1.12-15)",
+        "vector w, g, r0, v0\nmodel(ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0), [w = [0, 0, 1], g = [0, 0, -10]])",
+        2, 2, [](const builtin& b, const args_t& a, context&) {
+            return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
+        });
+    add(r, "eval", "eval(e, values, t = T)",
+        "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
+        "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
+        "number or a list of numbers. Returns a number or a list of components (a list of those for "
+        "several times). Where the values make the closed form singular (w = 0 in sin(|w| t)/|w|), "
+        "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
+        "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
+        "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases).",
+        "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
+        [](const builtin& b, const args_t& a, context&) -> value {
+            // floats taken as the exact numbers they are, so that nothing is rounded before
+            // to_double's precision-controlled evaluation (cancellation, long phases)
+            const ex e = num::exact_floats_of(arg_ex(a, 0, b));
+            const data_values d = exact_values(read_values(a[1], b, 1));
+            std::vector<ex> times;
+            ex tsym;
+            if (a.size() == 3) {
+                const ex& tr = arg_ex(a, 2, b);
+                if (!GiNaC::is_a<GiNaC::relational>(tr) || !GiNaC::is_a<GiNaC::symbol>(tr.lhs()))
+                    throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
+                tsym = tr.lhs();
+                const ex T = tr.rhs();
+                if (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T))  // t = [T1, T2, ...]
+                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::exact_floats_of(T.op(i)));
+                else
+                    times.push_back(num::exact_floats_of(T));
+            }
+            if (a.size() == 3 && a[2].is_ex() && times.empty())
+                throw type_error(b.name + ": no time given");
+            try {
+                if (times.empty()) return numbers(put_values_limit(e, d), b);
+                list out;
+                for (const ex& T : times) {
+                    data_values dt = d;
+                    dt.scalars[tsym] = T;
+                    out.push_back(numbers(put_values_limit(e, dt), b));
+                }
+                return times.size() == 1 ? out[0] : value(out);
+            } catch (const type_error& x) {
+                const std::string m = x.what();
+                if (m.rfind(b.name + ": ", 0) == 0) throw;
+                throw type_error(b.name + ": " + m);
+            }
+        });
+    add(r, "verify", "verify(P, s, values, T [, n [, stepper]])",
+        "Compares the closed form s of the problem P with a numerical integration of P itself "
+        "(Boost.Odeint, from P's own initial values) on [0, T] at n sample times (default 200): prints "
+        "the largest relative difference (per component, relative to that component's largest value), "
+        "where it occurs, and the time each method took; returns the largest relative difference. "
+        "stepper: \"rkf78\" (default, controlled Runge-Kutta-Fehlberg 7(8)), \"bulirsch_stoer\", "
+        "\"dopri5\"; tolerances 1e-12 absolute and relative.",
+        "", "vector r0\nverify(ode(r'' + 4*r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)", 4, 6,
+        [](const builtin& b, const args_t& a, context& c) -> value {
+            const auto& P = problem_arg(a, 0, b);
+            const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
+            data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
+            const double T = to_double(arg_ex(a, 3, b), b, "the end time T");
+            if (!(T > 0) || !std::isfinite(T)) throw type_error(b.name + ": the end time T must be positive");
+            const long n = a.size() > 4 ? arg_int(a, 4, b, 2, 10000000) : 200;
+            num::integration_options opt;
+            opt.abs_tol = opt.rel_tol = 1e-12;
+            if (a.size() > 5) opt.stepper = num::stepper_from_name(arg_string(a, 5, b));
+            if (opt.stepper == num::stepper_kind::rk4)
+                throw type_error(b.name + ": rk4 has no error control; use rkf78, bulirsch_stoer or dopri5");
+            const auto t0 = std::chrono::steady_clock::now();
+            // the closed form with the values put in (t stays free)
+            const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
+            d.scalars.erase(P.t);
+            const std::vector<ex> cf = components(put_values_limit(s, d));
+            // the first-order system: state x, x', ..., x^(M-1); x^(M) solved from the equation
+            const first_order_system sys = first_order(P, d, b);
+            const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            const num::verify_result v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T,
+                                                        std::size_t(n), opt);
+            static const char* axes[] = {"x", "y", "z"};
+            c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
+                    << " (component " << (P.is_vector ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
+                    << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
+                    << "]; closed form " << seconds(v.closed_form_seconds) << precision_note(v) << ", "
+                    << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("
+                    << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
+                    << "\n";
+            return value(ex(v.max_relative_difference));
+        });
+}
+
+}  // namespace symrep::lang

@@ -1,0 +1,434 @@
+// symrep/lang/interpreter.cpp -- the session: running scripts and statements, error reports, declarations and assignment.
+#include "lang/interpreter.h"
+#include "core/interrupt.h"
+#include "lang/statement_clock.h"
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "scalar/scalar.h"
+#include "syntax/parser.h"
+#include "output/printer.h"
+#include "vector/vector.h"
+#include "lang/print_value.h"
+#include "output/formats.h"
+
+namespace symrep::lang {
+
+using output::json_quote;
+using output::print_ex;
+
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+// ---------------------------------------------------------------------------
+// session
+
+session::session(std::ostream& out, std::ostream& err)
+    : out_(&out), err_(&err), digits_at_start_(GiNaC::Digits), notation_at_start_(symrep::vector_notation()) {
+    register_all_builtins(reg_);
+}
+session::session() : session(std::cout, std::cerr) {}
+session::~session() {  // Digits := n and notation(...) are per session
+    GiNaC::Digits = digits_at_start_;
+    symrep::set_vector_notation(notation_at_start_);
+}
+
+GiNaC::ex session::symbol(const std::string& name) {
+    auto it = symbols_.find(name);
+    if (it != symbols_.end()) return it->second;
+    // Script symbols are real: the algebras of symrep are real algebras, and
+    // real_part/conjugate of expressions in them must simplify.
+    GiNaC::ex s = GiNaC::realsymbol(name);
+    symbols_.emplace(name, s);
+    return s;
+}
+
+void session::set(const std::string& name, value v) { vars_[name] = std::move(v); }
+
+const value* session::get(const std::string& name) const {
+    auto it = vars_.find(name);
+    return it == vars_.end() ? nullptr : &it->second;
+}
+
+std::string session::resolve_path(const std::string& path) const {
+    namespace fs = std::filesystem;
+    fs::path p(path);
+    if (p.is_absolute()) return path;
+    const std::string& dir = dirs_.empty() ? base_dir_ : dirs_.back();
+    if (dir.empty()) return path;
+    return (fs::path(dir) / p).string();
+}
+
+namespace {
+
+/// The text of line `line` (1-based) of `text`, without its newline.
+std::string line_of(const std::string& text, int line) {
+    std::size_t start = 0;
+    for (int l = 1; l < line; ++l) {
+        start = text.find('\n', start);
+        if (start == std::string::npos) return {};
+        ++start;
+    }
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    return text.substr(start, end - start);
+}
+
+bool utf8_continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+/// Byte offset of (line, column) in text (both 1-based; columns count
+/// characters, as the lexer does: UTF-8 continuation bytes do not), clamped to
+/// the text.
+std::size_t offset_of(const std::string& text, int line, int column) {
+    std::size_t p = 0;
+    for (int l = 1; l < line; ++l) {
+        p = text.find('\n', p);
+        if (p == std::string::npos) return text.size();
+        ++p;
+    }
+    for (int c = 1; c < column && p < text.size() && text[p] != '\n'; ++c)
+        for (++p; p < text.size() && utf8_continuation(text[p]);) ++p;
+    return p;
+}
+
+std::string trimmed(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t\r\n;");
+    if (a == std::string::npos) return {};
+    const std::size_t b = s.find_last_not_of(" \t\r\n;");
+    return s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+
+void session::report(const source_location& where, const std::string& msg) {
+    ++failures_;
+    if (opts_.stop_on_error) stopped_ = true;
+    if (opts_.format == output_options::json) {
+        *err_ << "{\"error\": " << json_quote(msg) << ", \"file\": " << json_quote(where.file)
+              << ", \"line\": " << where.line << ", \"column\": " << where.column << "}\n";
+        err_->flush();
+        return;
+    }
+    *err_ << where.file << ":" << where.line << ":" << where.column << ": error: " << msg << "\n";
+    if (opts_.caret) {
+        auto it = sources_.find(where.file);
+        if (it != sources_.end() && where.line >= 1) {
+            std::string l = line_of(it->second, where.line);
+            if (!l.empty() && l.back() == '\r') l.pop_back();
+            if (!l.empty() && where.column >= 1 && static_cast<std::size_t>(where.column) <= l.size() + 1) {
+                std::string pad;  // one blank per character before the column (tabs kept)
+                for (std::size_t i = 0; i < offset_of(l, 1, where.column); ++i)
+                    if (!utf8_continuation(l[i])) pad += l[i] == '\t' ? '\t' : ' ';
+                *err_ << "    " << l << "\n    " << pad << "^\n";
+            }
+        }
+    }
+    err_->flush();
+}
+
+int session::run_file(const std::string& path) {
+    if (stopped_) return 0;
+    const std::string full = resolve_path(path);
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(full, ec)) {
+        report({path, 1, 1}, "cannot run '" + full + "': it is a directory, not a script");
+        return 1;
+    }
+    std::ifstream in(full, std::ios::binary);
+    if (!in) {
+        report({path, 1, 1}, "cannot open file '" + full + "'");
+        return 1;
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string dir = fs::path(full).parent_path().string();
+    dirs_.push_back(dir);
+    int failed = 0;
+    try {
+        // top-level files keep the name they were given; loaded files show
+        // the resolved path, so that the report says where they are
+        failed = run_string(ss.str(), dirs_.size() > 1 ? full : path);
+    } catch (...) {
+        dirs_.pop_back();
+        throw;
+    }
+    dirs_.pop_back();
+    return failed;
+}
+
+int session::run_string(const std::string& text, const std::string& name) {
+    const int before = failures_;
+    if (stopped_) return 0;
+    parser p(text, name);
+    files_.push_back(name);
+    sources_[name] = text;
+    while (!p.at_end() && !stopped_) {
+        node_ptr s;
+        try {
+            s = p.next_statement();
+        } catch (const syntax_error& e) {
+            report(e.where, std::string("syntax error: ") + e.what());
+            p.recover();
+            continue;
+        }
+        if (!s) continue;
+        const source_location here{name, s->line, s->column};
+        if (opts_.echo) {
+            const auto [bl, bc] = p.statement_begin();
+            const auto [el, ec] = p.statement_end();
+            const std::size_t a = offset_of(text, bl, bc);
+            std::size_t b = offset_of(text, el, ec);
+            if (b <= a) b = text.find('\n', a) == std::string::npos ? text.size() : text.find('\n', a);
+            *out_ << "> " << trimmed(text.substr(a, b - a)) << "\n";
+        }
+        try {
+            exec(*s, true);
+        } catch (const script_error& e) {
+            report(e.where, e.what());
+        } catch (const std::bad_alloc& e) {
+            report(here, allocation_failure_message(e, out_of_memory_message));
+        } catch (const symrep::error& e) {
+            report(here, e.what());
+        } catch (const std::exception& e) {
+            report(here, clear_message(e.what()));
+        } catch (...) {
+            report(here, "unknown internal error");
+        }
+    }
+    files_.pop_back();
+    out_->flush();
+    return failures_ - before;
+}
+
+value session::evaluate(const std::string& text) {
+    parser p(text, "<evaluate>");
+    files_.push_back("<evaluate>");
+    value last;
+    try {
+        while (!p.at_end()) {
+            node_ptr s;
+            try {
+                s = p.next_statement();
+            } catch (const syntax_error& e) {
+                throw script_error(std::string("syntax error: ") + e.what(), e.where, std::current_exception());
+            }
+            if (!s) continue;
+            if (s->kind == node::assign) {
+                exec(*s, false);
+                last = *get(s->text);
+            } else if (s->kind == node::declare) {
+                exec(*s, false);
+                last = value();
+            } else {
+                const statement_clock clock(opts_.time_limit, statement_start_);
+                last = eval(*s);
+            }
+        }
+    } catch (...) {
+        files_.pop_back();
+        throw;
+    }
+    files_.pop_back();
+    return last;
+}
+
+// vector a, b: a and b are vectors from now on (thesis Ch. VI);
+// positive k: k is a positive real symbol from now on (earlier expressions keep
+// the real symbol they were built with).
+void session::declare(const node& n) {
+    for (const auto& k : n.kids) {
+        if (get(k->text))
+            throw script_error("cannot declare '" + k->text + "': it is a variable (assigned with :=)",
+                               {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+        if (n.text == "vector") {
+            register_vector(symbol(k->text));
+        } else {
+            if (is_vector_symbol(symbol(k->text)))
+                throw script_error("cannot declare '" + k->text + "' positive: it is a vector",
+                                   {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+            symbols_[k->text] = GiNaC::possymbol(k->text);
+        }
+    }
+}
+
+// ode(EQUATION, x(0) = X0, x'(0) = X1, ...): the unknown x is a function of t;
+// it is a vector when an initial value is. The equation is evaluated with x,
+// x', ... bound to the unknown and its derivatives.
+value session::ode_form(const node& n) {
+    const std::string usage = " (usage: ode(x'' + a x' + b x = f, x(0) = x0, x'(0) = v0))";
+    auto where = [&](const node& k) {
+        return source_location{files_.empty() ? "<string>" : files_.back(), k.line, k.column};
+    };
+    if (n.kids.size() < 2) throw type_error("ode: expects an equation and initial conditions" + usage);
+    const node& eq = *n.kids[0];
+    if (eq.kind != node::binary || eq.text != "=")
+        throw script_error("ode: the first argument must be an equation lhs = rhs" + usage, where(eq));
+    mechanics::cauchy_problem P;
+    std::vector<bool> seen;
+    std::vector<value> init;
+    for (std::size_t i = 1; i < n.kids.size(); ++i) {
+        const node& c = *n.kids[i];
+        if (c.kind != node::binary || c.text != "=" || c.kids[0]->kind != node::call || c.kids[0]->kids.size() != 1)
+            throw script_error("ode: argument " + std::to_string(i + 1) + " must be an initial condition such as " +
+                                   "x(0) = x0 or x'(0) = v0" + usage, where(c));
+        const std::string& f = c.kids[0]->text;
+        std::size_t k = 0;  // the number of primes
+        while (k < f.size() && f[f.size() - 1 - k] == '\'') ++k;
+        const std::string base = f.substr(0, f.size() - k);
+        if (P.name.empty()) P.name = base;
+        if (base != P.name)
+            throw script_error("ode: initial conditions for two functions, " + P.name + " and " + base, where(c));
+        const value t0 = eval(*c.kids[0]->kids[0]);
+        if (!t0.is_ex() || !t0.as_ex().is_zero())
+            throw script_error("ode: initial conditions are given at t = 0", where(*c.kids[0]->kids[0]));
+        if (k >= seen.size()) { seen.resize(k + 1, false); init.resize(k + 1); }
+        if (seen[k]) throw script_error("ode: " + f + "(0) is given twice", where(c));
+        seen[k] = true;
+        init[k] = eval(*c.kids[1]);
+    }
+    for (std::size_t k = 0; k < seen.size(); ++k)
+        if (!seen[k])
+            throw type_error("ode: the initial condition " + P.name + std::string(k, '\'') + "(0) is missing" + usage);
+    P.t = symbol("t");
+    if (P.name == "t") throw type_error("ode: the unknown cannot be named t (t is the independent variable)");
+    for (const value& v : init)
+        if (!v.is_ex() && !is_triple(v))
+            throw type_error("ode: an initial value must be an expression or a vector, not " + v.a_kind());
+    P.is_vector = false;
+    for (const value& v : init)
+        if ((v.is_ex() && is_vector(v.as_ex())) || v.is_list()) P.is_vector = true;
+    for (const value& v : init) {
+        const ex e = v.is_list() ? vector_operand("ode", v, "initial") : v.as_ex();
+        if (P.is_vector && !e.is_zero() && !is_vector(e))
+            throw type_error("ode: the initial values mix vectors and scalars: " + print_ex(e));
+        P.initial.push_back(e);
+    }
+    const std::size_t M = init.size();
+    // a derivative of higher order than the conditions allow is an error at its place
+    std::function<void(const node&)> scan = [&](const node& k) {
+        if (k.kind == node::ident && k.text.size() > P.name.size() + M && k.text.rfind(P.name, 0) == 0 &&
+            k.text.find_first_not_of('\'', P.name.size()) == std::string::npos)
+            throw script_error("ode: " + k.text + " appears, but " + std::to_string(M) + " initial condition" +
+                                   (M == 1 ? "" : "s") + " make an equation of order " + std::to_string(M),
+                               where(k));
+        for (const auto& c : k.kids) scan(*c);
+    };
+    scan(eq);
+    // The unknown and its derivatives (the order is the number of conditions),
+    // bound as x, x', ... while the equation is evaluated.
+    auto build = [&](bool vector) {
+        P.is_vector = vector;
+        P.unknowns.clear();
+        if (vector) {
+            GiNaC::ex x = GiNaC::realsymbol(P.name);
+            register_vector_function(x, P.t);
+            P.unknowns.push_back(x);
+            for (std::size_t m = 1; m <= M; ++m) P.unknowns.push_back(derivative(P.unknowns.back()));
+        } else {
+            for (std::size_t m = 0; m <= M; ++m) P.unknowns.push_back(GiNaC::realsymbol(P.unknown_name(m)));
+        }
+        std::map<std::string, std::optional<value>> saved;
+        for (std::size_t m = 0; m <= M; ++m) {
+            const std::string nm = P.unknown_name(m);
+            const value* old = get(nm);
+            saved[nm] = old ? std::optional<value>(*old) : std::nullopt;
+            vars_[nm] = value(P.unknowns[m]);
+        }
+        auto restore = [&] {
+            for (auto& [nm, v] : saved) {
+                if (v) vars_[nm] = *v;
+                else vars_.erase(nm);
+            }
+        };
+        value lhs, rhs;
+        try {
+            lhs = eval(*eq.kids[0]);
+            rhs = eval(*eq.kids[1]);
+        } catch (...) {
+            restore();
+            throw;
+        }
+        restore();
+        const value E = binary_op("-", lhs, rhs);
+        if (!E.is_ex())
+            throw script_error("ode: the equation must be between expressions, not " + lhs.a_kind() + " and " +
+                                   rhs.a_kind(), where(eq));
+        P.expression = E.as_ex();
+        if (vector && !E.as_ex().is_zero() && !is_vector(E.as_ex()))
+            throw script_error("ode: the equation is scalar but the initial values are vectors", where(eq));
+    };
+    // initial values that are all 0 leave the kind open: a vector if the equation is one
+    const bool open = !P.is_vector && std::all_of(P.initial.begin(), P.initial.end(), [](const ex& e) { return e.is_zero(); });
+    if (open) {
+        try {
+            build(true);
+        } catch (const std::exception&) {
+            build(false);
+        }
+    } else {
+        build(P.is_vector);
+    }
+    // read once, now: errors point at ode(...), and solve() uses the result
+    P.reduced = std::make_shared<const mechanics::operator_form>(mechanics::reduce(P));
+    return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
+}
+
+void session::exec(const node& stmt, bool echo) {
+    const statement_clock clock(opts_.time_limit, statement_start_);
+    if (stmt.kind == node::declare) {
+        declare(stmt);
+        return;
+    }
+    if (stmt.kind == node::assign) {
+        value v = eval(*stmt.kids[0]);
+        if (v.is_none())
+            throw script_error("cannot assign nothing to '" + stmt.text + "': the right side has no value",
+                               {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+        if (stmt.text == "Digits") {
+            // Digits := n sets the precision of floats (evalf, float literals)
+            if (!v.is_ex() || !is_a<numeric>(v.as_ex()) || !ex_to<numeric>(v.as_ex()).is_pos_integer() ||
+                ex_to<numeric>(v.as_ex()) > 100000)
+                throw script_error("Digits must be a positive integer (at most 100000), not " +
+                                       (v.is_ex() ? print_ex(v.as_ex()) : v.a_kind()),
+                                   {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+            GiNaC::Digits = ex_to<numeric>(v.as_ex()).to_long();
+        }
+        set(stmt.text, std::move(v));
+        return;
+    }
+    value v = eval(stmt);
+    if (!echo || v.is_none()) return;
+    results_.push_back(v);
+    switch (opts_.format) {
+        case output_options::text:
+            if (labels_) *out_ << "%" << results_.size() << " = ";
+            *out_ << print_value(v, true) << "\n";
+            break;
+        case output_options::latex: *out_ << latex_value(v) << "\n"; break;
+        case output_options::json:
+            *out_ << "{\"file\": " << json_quote(files_.empty() ? "<string>" : files_.back())
+                  << ", \"line\": " << stmt.line << ", \"kind\": " << json_quote(v.kind())
+                  << ", \"value\": " << json_quote(print_value(v, false)) << "}\n";
+            break;
+    }
+}
+
+std::atomic<bool>& interrupt_requested() { return symrep::interrupt_flag(); }
+
+std::vector<std::string> session::variable_names() const {
+    std::vector<std::string> names;
+    for (const auto& [k, v] : vars_) names.push_back(k);
+    return names;
+}
+
+}  // namespace symrep::lang

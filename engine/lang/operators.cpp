@@ -1,0 +1,413 @@
+// symrep/lang/operators.cpp -- the operators of the language on values: arithmetic, vector products, comparison (negate, binary_op, values_equal).
+#include "lang/interpreter.h"
+#include "core/interrupt.h"
+#include "lang/statement_clock.h"
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "scalar/scalar.h"
+#include "syntax/parser.h"
+#include "output/printer.h"
+#include "vector/vector.h"
+#include "lang/print_value.h"
+#include "output/formats.h"
+
+namespace symrep::lang {
+
+using output::json_quote;
+using output::print_ex;
+
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+namespace {
+
+std::string num_str(const GiNaC::numeric& x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+std::string article(const value& v) { return v.a_kind(); }
+
+const char* verb(const std::string& op) {
+    if (op == "+") return "add";
+    if (op == "-") return "subtract";
+    if (op == "*") return "multiply";
+    if (op == "/") return "divide";
+    if (op == "^") return "raise";
+    if (op == "=") return "equate";
+    return "compare";
+}
+
+[[noreturn]] void bad_operands(const std::string& op, const value& a, const value& b) {
+    std::string msg = std::string("cannot ") + verb(op) + " " + article(a);
+    if (op == "^") msg += " to the power " + article(b);
+    else if (op == "/") msg += " by " + article(b);
+    else if (op == "-") msg = "cannot subtract " + article(b) + " from " + article(a);
+    else msg += " and " + article(b);
+    throw type_error(msg + " (operator '" + op + "')");
+}
+
+bool has_symbolic(const ex& e) {
+    if (is_a<GiNaC::symbol>(e)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_symbolic(e.op(i))) return true;
+    return false;
+}
+
+// An operation with a matrix operand must give a matrix: 2^m, m^x and the like
+// have no meaning here (GiNaC would keep them as unevaluated products or powers
+// that cannot even be printed).
+ex finish(const ex& e, const ex& a, const ex& b, const std::string& op) {
+    if (!is_a<GiNaC::matrix>(a) && !is_a<GiNaC::matrix>(b)) return e;
+    const ex r = e.evalm();
+    if (!is_a<GiNaC::matrix>(r)) {
+        if (op == "^" && is_a<GiNaC::matrix>(b))
+            throw type_error("a matrix cannot be an exponent (operator '^')");
+        if (op == "^")
+            throw type_error("a matrix can only be raised to an integer power, not " + print_ex(b) +
+                             " (operator '^')");
+        throw type_error("cannot combine a matrix with " +
+                         std::string(is_a<GiNaC::matrix>(a) ? print_ex(b) : print_ex(a)) + " (operator '" + op +
+                         "')");
+    }
+    return r;
+}
+
+/// Integer exponents of non-numeric bases (x^k, (2*x)^k, m^k) are limited to this.
+constexpr long max_symbolic_exponent = 100000;
+
+/// The largest bit length of the rational numbers in e (0 when there are none).
+long max_numeric_bits(const ex& e) {
+    if (is_a<numeric>(e)) {
+        const numeric& x = ex_to<numeric>(e);
+        if (!x.is_rational()) return 64;
+        return std::max(x.numer().int_length(), x.denom().int_length());
+    }
+    long m = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) m = std::max(m, max_numeric_bits(e.op(i)));
+    return m;
+}
+
+/// The numeric term of e: e itself if a number, the number GiNaC keeps last in a sum, else 0.
+numeric numeric_term(const ex& e) {
+    if (is_a<numeric>(e)) return ex_to<numeric>(e);
+    if (is_a<GiNaC::add>(e) && e.nops() > 0 && is_a<numeric>(e.op(e.nops() - 1))) return ex_to<numeric>(e.op(e.nops() - 1));
+    return 0;
+}
+
+ex ex_binary(const std::string& op, const ex& a, const ex& b) {
+    // a relation between matrices (m = 1) takes no arithmetic: GiNaC would apply it to both sides
+    for (const ex* r : {&a, &b})
+        if (is_a<GiNaC::relational>(*r) && has_matrix(*r))
+            throw type_error("cannot " + std::string(verb(op)) + " a relation between matrices (operator '" + op +
+                             "')");
+    if ((op == "+" || op == "-") && is_a<GiNaC::matrix>(a) != is_a<GiNaC::matrix>(b)) {
+        // said here, not by GiNaC: add::eval throws for a matrix plus a number and loses the sum it allocated
+        const ex& other = is_a<GiNaC::matrix>(a) ? b : a;
+        if (is_a<numeric>(other) && !other.is_zero())
+            throw type_error("a matrix cannot be added to a number here (use a multiple of the identity matrix)");
+        if (!other.is_zero())
+            throw type_error("cannot combine a matrix with " + print_ex(other) + " (operator '" + op + "')");
+    }
+    if ((op == "+" || op == "-") && (has_matrix(a) || has_matrix(b)) &&
+        !(op == "+" ? numeric_term(a) + numeric_term(b) : numeric_term(a) - numeric_term(b)).is_zero())
+        // 2*M + 1, (x + 1) + M: the same, for sums that hold a matrix (add::eval would throw and leak)
+        throw type_error("a matrix cannot be added to a number here (use a multiple of the identity matrix)");
+    if (op == "+") return finish(a + b, a, b, op);
+    if (op == "-") return finish(a - b, a, b, op);
+    if (op == "*") return finish(a * b, a, b, op);
+    if (op == "/") {
+        if (b.is_zero()) throw domain_error("division by zero");
+        return finish(a / b, a, b, op);
+    }
+    if (op == "^") {
+        if (a.is_zero() && is_a<numeric>(b)) {
+            // said here, not by GiNaC: power::eval throws for these and loses the power it allocated
+            const numeric re = ex_to<numeric>(b).real();
+            if (re.is_negative())
+                throw domain_error(ex_to<numeric>(b).is_real()
+                                       ? "division by zero: 0 raised to a negative power"
+                                       : "division by zero: 0 raised to a power with a negative real part");
+            if (re.is_zero())
+                throw domain_error(b.is_zero() ? "0^0 is undefined"
+                                               : "0^" + print_ex(b) + " is undefined (0 raised to an imaginary power)");
+        }
+        if (is_a<numeric>(a) && is_a<numeric>(b) && !a.is_zero() &&
+            (!ex_to<numeric>(a).is_crational() || !ex_to<numeric>(b).is_crational())) {
+            // floating point, computed by CLN here: GiNaC's power::eval would do the same, but when
+            // the result is beyond the range of the floats of the precision (an overflow, an
+            // underflow) it throws and loses the power it allocated
+            return ex(ex_to<numeric>(a).power(ex_to<numeric>(b)));
+        }
+        if (is_a<numeric>(a) && is_a<numeric>(b) && ex_to<numeric>(a).is_rational() &&
+            ex_to<numeric>(b).is_integer()) {
+            // exact powers of numbers: refuse results of more than ~10^7 bits
+            const numeric& x = ex_to<numeric>(a);
+            const numeric k = abs(ex_to<numeric>(b));
+            const numeric bits = numeric(std::max(x.numer().int_length(), x.denom().int_length()));
+            if (k > numeric(10000000) || k * bits > numeric(10000000))
+                throw size_error("the exact power " + print_ex(a) + "^" + print_ex(b) +
+                                 " would have more than 10^7 bits");
+        }
+        if (!is_a<numeric>(a) && is_a<numeric>(b) && ex_to<numeric>(b).is_integer()) {
+            // integer powers of symbolic bases and matrices: bound the exponent, and the
+            // size of the numbers the power of the base's numeric factors would have
+            const numeric k = abs(ex_to<numeric>(b));
+            if (k > numeric(max_symbolic_exponent))
+                throw size_error("the power " + print_ex(b) + " of " +
+                                 (is_a<GiNaC::matrix>(a) ? std::string("a matrix") : print_ex(a)) +
+                                 " is too large: integer exponents of symbolic bases and matrices are limited to "
+                                 "10^5 in absolute value");
+            if (k * numeric(max_numeric_bits(a)) > numeric(10000000))
+                throw size_error("the power " + print_ex(b) + " of " + print_ex(a) +
+                                 " would hold numbers of more than 10^7 bits");
+        }
+        return finish(GiNaC::pow(a, b), a, b, op);
+    }
+    throw type_error("unknown operator " + op);
+}
+
+long integer_exponent(const value& b) {
+    if (!b.is_ex() || !is_a<numeric>(b.as_ex()) || !ex_to<numeric>(b.as_ex()).is_integer())
+        throw type_error("the power of an element must be an integer, not " +
+                         (b.is_ex() ? print_ex(b.as_ex()) : article(b)));
+    const numeric k = ex_to<numeric>(b.as_ex());
+    if (abs(k) > numeric(max_symbolic_exponent))
+        throw size_error("the power " + num_str(k) + " of an element is too large: element powers are limited to "
+                         "10^5 in absolute value");
+    return k.to_long();
+}
+
+value list_map2(const std::string& op, const list& a, const list& b) {
+    if (a.size() != b.size())
+        throw type_error("cannot " + std::string(verb(op)) + " lists of different lengths (" +
+                         std::to_string(a.size()) + " and " + std::to_string(b.size()) + ")");
+    list r;
+    r.reserve(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) r.push_back(binary_op(op, a[i], b[i]));
+    return r;
+}
+
+value list_scale(const std::string& op, const value& s, const list& l, bool list_left) {
+    list r;
+    r.reserve(l.size());
+    for (const value& x : l) r.push_back(list_left ? binary_op(op, x, s) : binary_op(op, s, x));
+    return r;
+}
+
+bool both_real_numbers(const ex& a, const ex& b, numeric& x, numeric& y) {
+    ex ea = a, eb = b;
+    if (!is_a<numeric>(ea) && ea.info(GiNaC::info_flags::real) && !has_symbolic(ea)) ea = ea.evalf();
+    if (!is_a<numeric>(eb) && eb.info(GiNaC::info_flags::real) && !has_symbolic(eb)) eb = eb.evalf();
+    if (!is_a<numeric>(ea) || !is_a<numeric>(eb)) return false;
+    x = ex_to<numeric>(ea);
+    y = ex_to<numeric>(eb);
+    return x.is_real() && y.is_real();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// value arithmetic
+
+value negate(const value& a) {
+    if (a.is_ex()) {
+        const ex& e = a.as_ex();
+        return is_a<GiNaC::matrix>(e) ? ex((-e).evalm()) : ex(-e);
+    }
+    if (a.is_element()) return -a.as_element();
+    if (a.is_list()) {
+        list r;
+        for (const value& x : a.as_list()) r.push_back(negate(x));
+        return r;
+    }
+    throw type_error("cannot negate " + article(a));
+}
+
+// A list of three expressions used with vectors is the literal [x, y, z].
+bool is_triple(const value& v) {
+    return v.is_list() && v.as_list().size() == 3 &&
+           std::all_of(v.as_list().begin(), v.as_list().end(), [](const value& e) { return e.is_ex(); });
+}
+ex as_literal(const value& v) {
+    const list& l = v.as_list();
+    return vector_literal(l[0].as_ex(), l[1].as_ex(), l[2].as_ex());
+}
+namespace {
+bool is_vector_ex(const value& v) { return v.is_ex() && !vector_symbols(v.as_ex()).empty(); }
+/// A vector by its components (what solve(P, values) and eval give): a 3x1 matrix.
+bool is_column3(const value& v) {
+    if (!v.is_ex() || !is_a<GiNaC::matrix>(v.as_ex())) return false;
+    const GiNaC::matrix& m = ex_to<GiNaC::matrix>(v.as_ex());
+    return m.rows() == 3 && m.cols() == 1;
+}
+}  // namespace
+ex vector_operand(const std::string& op, const value& v, const char* side) {
+    if (v.is_ex()) return v.as_ex();
+    if (is_triple(v)) return as_literal(v);
+    throw type_error("the " + std::string(side) + " operand of '" + op + "' must be a vector, not " + article(v));
+}
+
+bool values_equal(const value& a, const value& b) {
+    if (a.is_ex() && b.is_ex()) {
+        const ex& x = a.as_ex();
+        const ex& y = b.as_ex();
+        if (!is_a<GiNaC::matrix>(x) && !is_a<GiNaC::matrix>(y) && (has_matrix(x) || has_matrix(y)))
+            return x.is_equal(y);  // matrices inside relations and the like: never subtracted from numbers
+        if (is_vector_ex(a) || is_vector_ex(b)) return symrep::equal(x, y);  // exact, by components
+        if (is_a<GiNaC::matrix>(x) || is_a<GiNaC::matrix>(y)) {
+            if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return false;
+            const auto& m = ex_to<GiNaC::matrix>(x);
+            const auto& n = ex_to<GiNaC::matrix>(y);
+            if (m.rows() != n.rows() || m.cols() != n.cols()) return false;
+            for (unsigned i = 0; i < m.rows(); ++i)
+                for (unsigned j = 0; j < m.cols(); ++j)
+                    if (!is_zero_scalar(m(i, j) - n(i, j))) return false;
+            return true;
+        }
+        if (is_a<GiNaC::relational>(x) || is_a<GiNaC::relational>(y)) {
+            if (!is_a<GiNaC::relational>(x) || !is_a<GiNaC::relational>(y)) return false;
+            using F = GiNaC::info_flags;
+            for (unsigned f : {F::relation_equal, F::relation_not_equal, F::relation_less,
+                               F::relation_less_or_equal, F::relation_greater, F::relation_greater_or_equal})
+                if (x.info(f) != y.info(f)) return false;
+            return is_zero_scalar(x.op(0) - y.op(0)) && is_zero_scalar(x.op(1) - y.op(1));
+        }
+        return is_zero_scalar(x - y);
+    }
+    if (a.is_element() && b.is_element()) {
+        if (a.as_element().parent().name() != b.as_element().parent().name()) return false;
+        return a.as_element() == b.as_element();
+    }
+    if (a.is_element() && b.is_ex())  // never one holding a matrix (an element of matrices cannot be formed)
+        return !has_matrix(b.as_ex()) &&
+               a.as_element() == element::scalar(a.as_element().parent_ptr(), b.as_ex());
+    if (a.is_ex() && b.is_element()) return values_equal(b, a);
+    if (a.is_list() && b.is_list()) {
+        const list& x = a.as_list();
+        const list& y = b.as_list();
+        if (x.size() != y.size()) return false;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (!values_equal(x[i], y[i])) return false;
+        return true;
+    }
+    if (a.is_bool() && b.is_bool()) return a.as_bool() == b.as_bool();
+    if (a.is_string() && b.is_string()) return a.as_string() == b.as_string();
+    if (a.is_algebra() && b.is_algebra()) return a.as_algebra()->name() == b.as_algebra()->name();
+    if (a.is_none() && b.is_none()) return true;
+    return false;
+}
+
+
+value binary_op(const std::string& op, const value& a, const value& b) {
+    // vectors (thesis Ch. VI): a x b, a . b; [x, y, z] next to a vector is a literal
+    if (op == "x" || op == ".") {
+        const ex u = vector_operand(op, a, "left"), v = vector_operand(op, b, "right");
+        return op == "x" ? cross(u, v) : dot(u, v);
+    }
+    if ((op == "+" || op == "-" || op == "=") && (((is_vector_ex(a) || is_column3(a)) && is_triple(b)) ||
+                                                  (is_triple(a) && (is_vector_ex(b) || is_column3(b)))))
+        return binary_op(op, a.is_list() ? value(as_literal(a)) : a, b.is_list() ? value(as_literal(b)) : b);
+    if (op == "=" && a.is_ex() && is_triple(b))
+        return ex(GiNaC::relational(a.as_ex(), as_literal(b), GiNaC::relational::equal));
+    if (op == "=" && a.is_ex() && b.is_list() &&
+        std::all_of(b.as_list().begin(), b.as_list().end(), [](const value& e) { return e.is_ex(); })) {
+        GiNaC::lst l;  // t = [0, 1, 2, 5]: a list of values
+        for (const value& e : b.as_list()) l.append(e.as_ex());
+        return ex(GiNaC::relational(a.as_ex(), l, GiNaC::relational::equal));
+    }
+    if (op == "==") return values_equal(a, b);
+    if (op == "!=") return !values_equal(a, b);
+    if (op == "=") {
+        if (a.is_ex() && b.is_ex()) return ex(GiNaC::relational(a.as_ex(), b.as_ex(), GiNaC::relational::equal));
+        bad_operands(op, a, b);
+    }
+    if (op == "<" || op == ">" || op == "<=" || op == ">=") {
+        if (!a.is_ex() || !b.is_ex() || has_matrix(a.as_ex()) || has_matrix(b.as_ex())) bad_operands(op, a, b);
+        numeric x, y;
+        if (both_real_numbers(a.as_ex(), b.as_ex(), x, y)) {
+            if (op == "<") return x < y;
+            if (op == ">") return x > y;
+            if (op == "<=") return x <= y;
+            return x >= y;
+        }
+        using R = GiNaC::relational;
+        const R::operators o = op == "<" ? R::less : op == ">" ? R::greater : op == "<=" ? R::less_or_equal
+                                                                                        : R::greater_or_equal;
+        return ex(R(a.as_ex(), b.as_ex(), o));
+    }
+    // expressions
+    if (a.is_ex() && b.is_ex() && (op == "+" || op == "-") && (is_vector_ex(a) || is_vector_ex(b)) &&
+        (is_a<GiNaC::matrix>(a.as_ex()) || is_a<GiNaC::matrix>(b.as_ex()))) {
+        // w + [1, 2, 3], 2*[0, 0, t] - r0: a vector sum with a literal term, as the
+        // printer writes solutions (matrix arithmetic would refuse the abstract vector)
+        // each side a vector first: GiNaC's sum of a matrix and a number throws, and loses the sum
+        // (a 4x4 matrix of vector entries + 1e-3: the robustness run, input #47679 of seed 20261124)
+        const bool va = is_vector(a.as_ex()), vb = is_vector(b.as_ex());  // both: each may be ill-formed
+        if (!va || !vb)
+            throw type_error(std::string("cannot ") + verb(op) + " a vector and a scalar (operator '" + op + "')");
+        const ex r = op == "+" ? a.as_ex() + b.as_ex() : a.as_ex() - b.as_ex();
+        (void)is_vector(r);  // [1, 2] + w: type_error
+        return r;
+    }
+    if (a.is_ex() && b.is_ex()) {
+        ex r = ex_binary(op, a.as_ex(), b.as_ex());
+        if (is_vector_ex(a) || is_vector_ex(b)) (void)is_vector(r);  // w + 1, w*w, w^2: type_error
+        return r;
+    }
+    // elements
+    if (a.is_element() && b.is_element()) {
+        const element& x = a.as_element();
+        const element& y = b.as_element();
+        if (op == "+") return x + y;
+        if (op == "-") return x - y;
+        if (op == "*") return x * y;
+        if (op == "/") return x / y;
+        bad_operands(op, a, b);
+    }
+    if (a.is_element() && b.is_ex()) {
+        const element& x = a.as_element();
+        const ex& s = b.as_ex();
+        if (is_a<GiNaC::matrix>(s)) bad_operands(op, a, b);
+        if (op == "+") return x + element::scalar(x.parent_ptr(), s);
+        if (op == "-") return x - element::scalar(x.parent_ptr(), s);
+        if (op == "*") return x * s;
+        if (op == "/") {
+            if (is_zero_scalar(s)) throw domain_error("division by zero");
+            return x / s;
+        }
+        if (op == "^") return x.pow(integer_exponent(b));
+    }
+    if (a.is_ex() && b.is_element()) {
+        const ex& s = a.as_ex();
+        const element& y = b.as_element();
+        if (is_a<GiNaC::matrix>(s)) bad_operands(op, a, b);
+        if (op == "+") return element::scalar(y.parent_ptr(), s) + y;
+        if (op == "-") return element::scalar(y.parent_ptr(), s) - y;
+        if (op == "*") return s * y;
+        if (op == "/") return s * y.inverse();
+        bad_operands(op, a, b);
+    }
+    // lists
+    if (a.is_list() && b.is_list() && (op == "+" || op == "-")) return list_map2(op, a.as_list(), b.as_list());
+    if (a.is_list() && (b.is_ex() || b.is_element()) && (op == "*" || op == "/"))
+        return list_scale(op, b, a.as_list(), true);
+    if (b.is_list() && (a.is_ex() || a.is_element()) && op == "*") return list_scale(op, a, b.as_list(), false);
+    if (a.is_list() && b.is_list() && op == "*")
+        throw type_error("cannot multiply two lists (use matrix(...) for matrix products)");
+    // strings
+    if (a.is_string() && b.is_string() && op == "+") return a.as_string() + b.as_string();
+    bad_operands(op, a, b);
+}
+
+}  // namespace symrep::lang

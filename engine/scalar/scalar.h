@@ -1,0 +1,142 @@
+// symrep/scalar/scalar.h -- the exact scalar layer: the two coefficient types of
+// symrep and what every floor above needs to treat them alike.
+//
+// This folder is the ground of all mathematics in symrep. Exact arithmetic
+// uses GiNaC::ex (CLN rationals, algebraic numbers, symbols); the fast numeric
+// path uses double. Here live the exact zero test (zero_test.cpp), the
+// simplification of coefficients (tidy, simplify.cpp), radicals and
+// arctangents written as algebraic functions, and exp/log of scalars. Family
+// code that is written once as a template over T calls only the functions
+// below (plus +,-,*,/ and the elementary functions found by argument-dependent
+// lookup: exp, log, cos, sin, sqrt, atan2), so that one implementation serves
+// both paths. It includes only core/ (docs/architecture.md).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+#include <ginac/ginac.h>
+
+#include "core/error.h"
+
+namespace symrep {
+
+/// Logarithms of products of powers of positive rationals, and such powers,
+/// written over primes: log(c b^e) -> log(c) + e log(b), 8^(1/2) -> 2 2^(1/2), log(p1^k1 ... / q1^l1 ...) -> k1 log(p1) + ... - l1 log(q1) - ...
+/// (prime factors below 2^16 are split off; a larger cofactor stays one atom).
+/// Two sums of such logarithms are equal iff their expanded forms agree, so the
+/// zero test sees log(16)/2 = log(4) = 2 log(2).
+GiNaC::ex expand_rational_logs(const GiNaC::ex& e);
+
+/// True when e contains tan, sinh, cosh or tanh.
+bool has_tan_or_hyperbolic(const GiNaC::ex& e);
+
+/// True when exponentials of e can meet each other: two different exp(...), or
+/// one exp of a sum (exp(x)*exp(y) = exp(x + y) is then seen through Y_m below).
+bool has_related_exponentials(const GiNaC::ex& e);
+
+/// sin and cos (and tan) of linear combinations written through exponentials:
+/// with one symbol X_m standing for e^(i m) per monomial m of the arguments,
+/// sin(sum c_k m_k) = (E - 1/E)/(2i), cos = (E + 1/E)/2, E = prod X_{m_k}^{c_k}.
+/// A trigonometric polynomial in such arguments is 0 iff this rational function
+/// in the X_m is 0, so the zero test sees the addition theorems (sin((a + b) t)
+/// = ...). Likewise sinh, cosh, tanh with symbols Y_m standing for e^m, and
+/// exp(u) = prod Y_{m_k}^{c_k} when the expression has a hyperbolic function
+/// or exponentials that can meet (has_related_exponentials)
+/// (cosh(x)^2 - sinh(x)^2 = 1, cosh(x) = (e^x + e^-x)/2).
+GiNaC::ex trig_exponential_form(const GiNaC::ex& e);
+
+/// e with each odd power sqrt(b)^k of a non-numeric b written q_b^k, q_b a real
+/// symbol per base (`roots`: base and symbol, in order of appearance).
+struct square_roots_as_symbols {
+    GiNaC::ex e;
+    std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> roots;
+};
+square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e);
+
+/// Zero test of a rational function of symbols and square roots of non-numeric
+/// expressions: each sqrt(b) becomes a symbol q_b, and the numerator is reduced
+/// modulo q_b^2 - b (normal() alone treats sqrt(b) as an unrelated atom, so that
+/// sqrt(b)^2 - b would not cancel once it is split over a fraction).
+bool is_zero_modulo_square_roots(const GiNaC::ex& e);
+
+/// True when e contains b^(k/2), k odd, with b not a number.
+bool has_symbolic_square_root(const GiNaC::ex& e);
+
+/// sin, cos and tan of atan2(y, x) and of atan(z) as algebraic functions:
+/// cos(atan2(y, x)) = x/sqrt(x^2 + y^2), sin(atan2(y, x)) = y/sqrt(x^2 + y^2),
+/// tan(atan2(y, x)) = y/x; cos(atan(z)) = 1/sqrt(1 + z^2), sin(atan(z)) =
+/// z/sqrt(1 + z^2) (identities for real arguments, which atan2 has). exp of
+/// the logarithm of an element (III.1.58: log |z| + i arg z) then gives back its
+/// coordinates. The sum under the root is expanded, as log_modulus writes it, so
+/// that sqrt(x^2 + y^2) meets the modulus it came from.
+GiNaC::ex trig_of_arctangents(const GiNaC::ex& e);
+
+/// Exact zero test: true when the expression normalizes to 0 (logarithms and
+/// powers of rational numbers are compared over primes, sin, cos, tan and the
+/// hyperbolic functions through exponentials, and square roots of expressions
+/// as algebraic symbols, when plain normalization does not decide).
+bool is_zero_scalar(const GiNaC::ex& x);
+
+/// e.subs(s) (s: a relation, a list of them, or an exmap), with a division by
+/// zero said before GiNaC evaluates it: GiNaC's power::eval throws for 0^(-k)
+/// and loses the power it allocated. Powers are checked innermost first.
+template <class S>
+GiNaC::ex subs_checked(const GiNaC::ex& e, const S& s) {
+    for (auto it = e.postorder_begin(); it != e.postorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+            !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).real().is_positive() && it->op(0).subs(s).is_zero())
+            throw domain_error("division by zero");
+    return e.subs(s);
+}
+
+/// Double zero test with an absolute tolerance (callers scale it to the data).
+inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
+
+/// True when x contains a function call (exp, cos, log, ...).
+bool has_function_call(const GiNaC::ex& x);
+
+/// True when a is a number < 0 or a product with a numeric factor < 0 (-5*t).
+bool has_negative_sign(const GiNaC::ex& a);
+
+/// cos(-u) -> cos(u), sin(-u) -> -sin(u), everywhere in e (GiNaC leaves
+/// cos(-5*t) alone, so that cos(5*t) and cos(-5*t) would not combine).
+GiNaC::ex normalize_trig_signs(const GiNaC::ex& e);
+
+/// Bring an exact coefficient to its simplest stored form: rational functions of
+/// symbols are expanded and normalized (one fraction, common factors cancelled);
+/// expressions with function calls, such as the closed forms of exp(w t), are only
+/// expanded, so that they stay sums of exponentials and trigonometric terms instead
+/// of becoming one fraction over exp(...). Identity for doubles.
+GiNaC::ex tidy(const GiNaC::ex& x);
+inline double tidy(double x) { return x; }
+
+/// An expression as text for an error message, cut to about `max` characters
+/// (a message that quotes a 10 000-character minimal polynomial helps nobody).
+std::string message_text(const GiNaC::ex& e, std::size_t max = 160);
+
+/// log |a + i b|: exact as log(a^2 + b^2)/2, so that the logarithms of one
+/// number combine (log(26)/2, never log(sqrt(26))); double through hypot, which
+/// does not overflow.
+GiNaC::ex log_modulus(const GiNaC::ex& a, const GiNaC::ex& b);
+inline double log_modulus(double a, double b) { return std::log(std::hypot(a, b)); }
+
+/// e^x, exact with the terms c log(y) of x taken out as y^c, so that exp(log w)
+/// gives back rational coordinates (GiNaC leaves exp(log(2)/2) unevaluated);
+/// std::exp on the double path.
+GiNaC::ex exp_scalar(const GiNaC::ex& x);
+inline double exp_scalar(double x) { return std::exp(x); }
+
+/// Scalar from an integer, for both paths.
+template <class T> T from_int(long k) { return T(k); }
+template <> inline GiNaC::ex from_int<GiNaC::ex>(long k) { return GiNaC::ex(GiNaC::numeric(k)); }
+
+/// One over 2^n, exact or double.
+template <class T> T inv_pow2(unsigned n) { return std::ldexp(1.0, -int(n)); }
+template <> inline GiNaC::ex inv_pow2<GiNaC::ex>(unsigned n) {
+    return GiNaC::ex(GiNaC::numeric(1) / GiNaC::pow(GiNaC::numeric(2), GiNaC::numeric(n)));
+}
+
+}  // namespace symrep

@@ -1,0 +1,133 @@
+// symrep/scalar/simplify.cpp -- tidy, trigonometric signs, arctangents, exp and log of scalars (scalar.h).
+#include "scalar/scalar.h"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/expression_size.h"
+
+namespace symrep {
+
+GiNaC::ex trig_of_arctangents(const GiNaC::ex& e) {
+    // one pass to see whether there is anything to do (tidy() calls this on every result)
+    bool any = false;
+    for (auto it = e.preorder_begin(); it != e.preorder_end() && !any; ++it)
+        any = GiNaC::is_the_function<GiNaC::atan2_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::atan_SERIAL>(*it);
+    if (!any) return e;
+    struct rewrite : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            const bool s = GiNaC::is_the_function<GiNaC::sin_SERIAL>(y), c = GiNaC::is_the_function<GiNaC::cos_SERIAL>(y),
+                       t = GiNaC::is_the_function<GiNaC::tan_SERIAL>(y);
+            if (!s && !c && !t) return y;
+            GiNaC::ex a = y.op(0), sign = 1;
+            if (GiNaC::is_a<GiNaC::mul>(a) && a.nops() == 2 && a.op(1).is_equal(-1)) {  // sin(-u) = -sin(u)
+                a = a.op(0);
+                sign = c ? 1 : -1;
+            }
+            GiNaC::ex num, den;  // the tangent of the angle a is num/den, with den > 0 or num/den real
+            if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(a)) {
+                num = a.op(0);
+                den = a.op(1);
+            } else if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(a) && !a.op(0).has(GiNaC::I)) {
+                num = a.op(0);
+                den = 1;
+            } else {
+                return y;
+            }
+            if (t) return sign * num / den;
+            const GiNaC::ex r = GiNaC::sqrt(GiNaC::expand(num * num + den * den));
+            return sign * (s ? num : den) / r;
+        }
+    } f;
+    return f(e);
+}
+
+bool has_function_call(const GiNaC::ex& x) {
+    if (GiNaC::is_a<GiNaC::function>(x)) return true;
+    for (std::size_t k = 0; k < x.nops(); ++k)
+        if (has_function_call(x.op(k))) return true;
+    return false;
+}
+
+bool has_negative_sign(const GiNaC::ex& a) {
+    if (GiNaC::is_a<GiNaC::numeric>(a)) return GiNaC::ex_to<GiNaC::numeric>(a).is_negative();
+    if (GiNaC::is_a<GiNaC::mul>(a))
+        for (std::size_t k = 0; k < a.nops(); ++k)
+            if (GiNaC::is_a<GiNaC::numeric>(a.op(k)))
+                return GiNaC::ex_to<GiNaC::numeric>(a.op(k)).is_negative();
+    return false;
+}
+
+GiNaC::ex normalize_trig_signs(const GiNaC::ex& e) {
+    struct trig_sign : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (GiNaC::is_a<GiNaC::function>(y) && y.nops() == 1 && has_negative_sign(y.op(0))) {
+                const std::string f = GiNaC::ex_to<GiNaC::function>(y).get_name();
+                if (f == "cos") return GiNaC::cos(-y.op(0));
+                if (f == "sin") return -GiNaC::sin(-y.op(0));
+            }
+            return y;
+        }
+    } m;
+    return m(e);
+}
+
+GiNaC::ex tidy(const GiNaC::ex& x) {
+    guard_expansion(x, "simplification", false);
+    const GiNaC::ex e = GiNaC::expand(trig_of_arctangents(x));
+    if (has_function_call(e)) return GiNaC::expand(normalize_trig_signs(e));
+    guard_expansion(e, "simplification", true);
+    return GiNaC::normal(e);
+}
+
+std::string message_text(const GiNaC::ex& e, std::size_t max) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    if (s.size() > max)
+        s = s.substr(0, max / 2) + " ... " + s.substr(s.size() - max / 4) + " (" +
+            std::to_string(s.size()) + " characters)";
+    return s;
+}
+
+GiNaC::ex log_modulus(const GiNaC::ex& a, const GiNaC::ex& b) {
+    return GiNaC::log(tidy(a * a + b * b)) / 2;
+}
+
+GiNaC::ex exp_scalar(const GiNaC::ex& x) {
+    const auto is_log = [](const GiNaC::ex& u) {
+        return GiNaC::is_a<GiNaC::function>(u) && GiNaC::ex_to<GiNaC::function>(u).get_name() == "log";
+    };
+    // over primes, so that 8^(1/2) comes back as 2*2^(1/2) and cancels against 2^(1/2)
+    const GiNaC::ex e = GiNaC::expand(x.has(GiNaC::log(GiNaC::wild())) ? expand_rational_logs(x) : x);
+    GiNaC::ex rest = 0, pre = 1;
+    auto term = [&](const GiNaC::ex& u) {
+        if (is_log(u)) {
+            pre *= u.op(0);
+            return;
+        }
+        if (GiNaC::is_a<GiNaC::mul>(u) && u.nops() == 2) {
+            for (int i = 0; i < 2; ++i) {
+                const GiNaC::ex a = u.op(i), b = u.op(1 - i);
+                if (GiNaC::is_a<GiNaC::numeric>(b) && is_log(a)) {
+                    pre *= GiNaC::pow(a.op(0), b);
+                    return;
+                }
+            }
+        }
+        rest += u;
+    };
+    if (GiNaC::is_a<GiNaC::add>(e))
+        for (std::size_t i = 0; i < e.nops(); ++i) term(e.op(i));
+    else
+        term(e);
+    return pre * GiNaC::exp(rest);
+}
+
+}  // namespace symrep

@@ -1,0 +1,219 @@
+// symrep/scalar/zero_test.cpp -- the exact zero test and the forms it reduces to (scalar.h).
+#include "scalar/scalar.h"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/expression_size.h"
+
+namespace symrep {
+
+GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
+    struct expand_logs : GiNaC::map_function {
+        static GiNaC::ex log_of_integer(GiNaC::numeric N) {
+            GiNaC::ex out = 0;
+            for (long p = 2; p < 65536 && N > 1; ++p) {
+                if (GiNaC::numeric(p) * p > N) break;
+                int k = 0;
+                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
+                if (k) out += k * GiNaC::log(GiNaC::ex(p));
+            }
+            if (N > 1) out += GiNaC::log(GiNaC::ex(N));
+            return out;
+        }
+        static bool is_positive_rational(const GiNaC::ex& x) {
+            return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
+                   GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
+        }
+        static GiNaC::ex power_of_integer(GiNaC::numeric N, const GiNaC::ex& q) {
+            GiNaC::ex out = 1;
+            for (long p = 2; p < 65536 && N > 1; ++p) {
+                if (GiNaC::numeric(p) * p > N) break;
+                int k = 0;
+                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
+                if (k) out *= GiNaC::pow(GiNaC::ex(p), k * q);
+            }
+            if (N > 1) out *= GiNaC::pow(GiNaC::ex(N), q);
+            return out;
+        }
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            // r^q, r a positive rational, q a non-integer rational: over primes
+            if (GiNaC::is_a<GiNaC::power>(y) && is_positive_rational(y.op(0)) &&
+                GiNaC::is_a<GiNaC::numeric>(y.op(1)) && GiNaC::ex_to<GiNaC::numeric>(y.op(1)).is_rational() &&
+                !GiNaC::ex_to<GiNaC::numeric>(y.op(1)).is_integer()) {
+                const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(y.op(0));
+                return power_of_integer(r.numer(), y.op(1)) / power_of_integer(r.denom(), y.op(1));
+            }
+            if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1 ||
+                GiNaC::ex_to<GiNaC::function>(y).get_name() != "log")
+                return y;
+            // the argument as a product of factors b^k, b a positive rational, k rational
+            const GiNaC::ex a = y.op(0);
+            GiNaC::ex out = 0;
+            for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(a) ? a.nops() : 1); ++i) {
+                GiNaC::ex b = GiNaC::is_a<GiNaC::mul>(a) ? a.op(i) : a, k = 1;
+                if (GiNaC::is_a<GiNaC::power>(b) && GiNaC::is_a<GiNaC::numeric>(b.op(1)) &&
+                    GiNaC::ex_to<GiNaC::numeric>(b.op(1)).is_rational()) {
+                    k = b.op(1);
+                    b = b.op(0);
+                }
+                if (!is_positive_rational(b)) return y;
+                const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(b);
+                out += k * (log_of_integer(r.numer()) - log_of_integer(r.denom()));
+            }
+            return out;
+        }
+    } m;
+    return m(e);
+}
+
+bool has_tan_or_hyperbolic(const GiNaC::ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_the_function<GiNaC::tan_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::sinh_SERIAL>(*it) ||
+            GiNaC::is_the_function<GiNaC::cosh_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::tanh_SERIAL>(*it))
+            return true;
+    return false;
+}
+
+bool has_related_exponentials(const GiNaC::ex& e) {
+    GiNaC::ex first;  // a copy: *it lives in the iterator's stack, which moves as it advances
+    bool seen = false;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (!GiNaC::is_the_function<GiNaC::exp_SERIAL>(*it)) continue;
+        if (GiNaC::is_a<GiNaC::add>(it->op(0))) return true;
+        if (seen && !first.is_equal(*it)) return true;
+        first = *it;
+        seen = true;
+    }
+    return false;
+}
+
+GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
+    struct to_exp : GiNaC::map_function {
+        std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> X, Y;
+        bool exponentials = false;  ///< also write exp(u) through the Y_m
+        // prod over the terms c m of u of V_m^c, times e^(k c0) for a numeric term c0
+        GiNaC::ex power(const GiNaC::ex& u, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& V, const GiNaC::ex& k) {
+            GiNaC::ex E = 1;
+            for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(u) ? u.nops() : 1); ++i) {
+                GiNaC::ex term = GiNaC::is_a<GiNaC::add>(u) ? u.op(i) : u, c = 1;
+                if (GiNaC::is_a<GiNaC::numeric>(term)) {  // a constant phase: keep it as a number
+                    E *= GiNaC::exp(k * term);
+                    continue;
+                }
+                if (GiNaC::is_a<GiNaC::mul>(term) && GiNaC::is_a<GiNaC::numeric>(term.op(term.nops() - 1))) {
+                    c = term.op(term.nops() - 1);
+                    term = term / c;
+                }
+                auto it = V.find(term);
+                if (it == V.end()) it = V.emplace(term, GiNaC::realsymbol()).first;  // a formal variable
+                E *= GiNaC::pow(it->second, c);
+            }
+            return E;
+        }
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1) return y;
+            const GiNaC::ex u = GiNaC::expand(y.op(0));
+            if (u.has(GiNaC::I)) return y;
+            if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(y) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(y) ||
+                GiNaC::is_the_function<GiNaC::tan_SERIAL>(y)) {
+                const GiNaC::ex E = power(u, X, GiNaC::I), s = (E - 1 / E) / (2 * GiNaC::I), c = (E + 1 / E) / 2;
+                return GiNaC::is_the_function<GiNaC::sin_SERIAL>(y) ? s
+                       : GiNaC::is_the_function<GiNaC::cos_SERIAL>(y) ? c : s / c;
+            }
+            const bool sh = GiNaC::is_the_function<GiNaC::sinh_SERIAL>(y), ch = GiNaC::is_the_function<GiNaC::cosh_SERIAL>(y),
+                       th = GiNaC::is_the_function<GiNaC::tanh_SERIAL>(y);
+            if (!sh && !ch && !th && !(exponentials && GiNaC::is_the_function<GiNaC::exp_SERIAL>(y))) return y;
+            const GiNaC::ex H = power(u, Y, 1), s = (H - 1 / H) / 2, c = (H + 1 / H) / 2;
+            return sh ? s : ch ? c : th ? s / c : H;
+        }
+    } f;
+    f.exponentials = has_tan_or_hyperbolic(e) || has_related_exponentials(e);
+    return f(e);
+}
+
+square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e) {
+    struct roots : GiNaC::map_function {
+        std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> q;  // base, symbol (a real root)
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (!GiNaC::is_a<GiNaC::power>(y) || GiNaC::is_a<GiNaC::numeric>(y.op(0)) ||
+                !GiNaC::is_a<GiNaC::numeric>(y.op(1)))
+                return y;
+            const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(y.op(1)) * 2;
+            if (!k.is_integer() || k.is_even()) return y;
+            for (const auto& [b, s] : q)
+                if (b.is_equal(y.op(0))) return GiNaC::pow(s, k);
+            q.emplace_back(y.op(0), GiNaC::realsymbol());
+            return GiNaC::pow(q.back().second, k);
+        }
+    } r;
+    const GiNaC::ex z = r(e);
+    return {z, r.q};
+}
+
+bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
+    const square_roots_as_symbols r = with_square_roots_as_symbols(e);
+    const GiNaC::ex& z = r.e;
+    if (r.roots.empty()) return false;
+    try {
+        const GiNaC::ex n = GiNaC::expand(GiNaC::numer(GiNaC::normal(z)));
+        // complex coefficients (I): the real and the imaginary part vanish separately
+        std::vector<GiNaC::ex> parts{n};
+        if (n.has(GiNaC::I)) parts = {GiNaC::real_part(n), GiNaC::imag_part(n)};
+        for (GiNaC::ex part : parts) {
+            GiNaC::exmap atoms;  // functions and other non-polynomial parts as symbols
+            part = GiNaC::expand(part).to_polynomial(atoms);
+            for (const auto& [b, s] : r.roots) {
+                // s^2 = N/D: the base may be a fraction (q^2 |B|^2/m^2 + ...), whose 1/m
+                // to_polynomial would make an unrelated atom; N and D are made polynomials
+                // apart, and the remainder has coefficients in the fractions of the rest
+                const GiNaC::ex nd = GiNaC::normal(b).numer_denom();
+                const GiNaC::ex base = nd.op(1).is_equal(1) ? b.to_polynomial(atoms)
+                                                            : nd.op(0).to_polynomial(atoms) / nd.op(1).to_polynomial(atoms);
+                part = GiNaC::expand(GiNaC::rem(part, GiNaC::pow(s, 2) - base, s, false));
+            }
+            if (!GiNaC::normal(part).is_zero()) return false;
+        }
+        return true;
+    } catch (const std::exception&) {
+        return false;  // not decided: not proved zero
+    }
+}
+
+bool has_symbolic_square_root(const GiNaC::ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && !GiNaC::is_a<GiNaC::numeric>(it->op(0)) &&
+            GiNaC::is_a<GiNaC::numeric>(it->op(1))) {
+            const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(it->op(1)) * 2;
+            if (k.is_integer() && k.is_odd()) return true;
+        }
+    return false;
+}
+
+bool is_zero_scalar(const GiNaC::ex& x) {
+    if (x.is_zero()) return true;
+    guard_expansion(x, "zero test", true);
+    const GiNaC::ex y = expand_rational_logs(trig_of_arctangents(x));
+    // square roots of expressions first as algebraic symbols: faster than normal(),
+    // whose gcds over such atoms are slow, and complete where normal() is not
+    if (has_symbolic_square_root(y)) {
+        if (is_zero_modulo_square_roots(y)) return true;
+    } else if (GiNaC::normal(y).is_zero()) {
+        return true;
+    }
+    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y) &&
+        !has_related_exponentials(y))
+        return false;
+    const GiNaC::ex z = trig_exponential_form(y);
+    guard_expansion(z, "zero test", true);
+    return GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z);
+}
+
+}  // namespace symrep
