@@ -1,0 +1,279 @@
+// The rotation tensor of an arbitrary w(t) (VI.3.117), Kepler's problem by
+// universal variables, and the reduction of rotating-frame central-field
+// problems to the inertial one (Thm VI.3.2.1) with its first integrals
+// (Thm VI.3.2.2), each against Boost.Odeint on the equations as stated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+#include "mechanics/rotating_frame.h"
+#include "numeric/integrate.h"
+#include "numeric/kepler.h"
+#include "numeric/rotation_tensor.h"
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using namespace symrep;
+using namespace symrep::mechanics;
+using num::angular_velocity;
+
+// w(t) = (a1 sin c1 t, a2 cos c2 t, a3): the direction of w moves (the scene of the issue).
+const angular_velocity moving_w = [](double t) { return Vector3d(0.7 * std::sin(1.3 * t), 0.4 * std::cos(2.1 * t), 0.5); };
+const angular_velocity moving_w_dot = [](double t) {
+    return Vector3d(0.7 * 1.3 * std::cos(1.3 * t), -0.4 * 2.1 * std::sin(2.1 * t), 0.0);
+};
+
+// Q' = -W Q as nine components with Boost.Odeint (the reference for a moving axis).
+Matrix3d rotation_by_odeint(const angular_velocity& w, double t, double tol) {
+    const num::rhs_function rhs = [&](double s, const double* y, double* dy) {
+        Eigen::Map<const Matrix3d> Q(y);
+        Eigen::Map<Matrix3d> dQ(dy);
+        dQ = -num::skew(w(s)) * Q;
+    };
+    const Matrix3d I = Matrix3d::Identity();
+    num::integration_options o;
+    o.rel_tol = o.abs_tol = tol;
+    const num::integration_result r = num::integrate(rhs, 0.0, std::vector<double>(I.data(), I.data() + 9), {t}, o);
+    Matrix3d Q;
+    for (int i = 0; i < 9; ++i) Q.data()[i] = r.states(0, i);
+    return Q;
+}
+
+TEST(RotationTensor, RodriguesIsAnExactRotationForSmallAndLargeAngles) {
+    for (double p : {0.0, 1e-12, 1e-5, 1e-3, 0.5, 3.0, 40.0}) {
+        const Vector3d th = p * Vector3d(1, -2, 2) / 3.0;
+        const Matrix3d R = num::rotation_exp(th);
+        // tolerance: a few ulps
+        EXPECT_LT((R.transpose() * R - Matrix3d::Identity()).norm(), 1e-15) << p;
+        EXPECT_NEAR(R.determinant(), 1.0, 1e-15) << p;
+        EXPECT_LT((R * th - th).norm(), 4e-16 * std::max(1.0, p)) << p;  // the axis stays
+        // against the series of exp at small angles
+        const Matrix3d K = num::skew(th);
+        if (p < 1e-3) {
+            EXPECT_LT((R - (Matrix3d::Identity() + K + K * K / 2.0 + K * K * K / 6.0)).norm(), 1e-15);
+        }
+    }
+}
+
+// The Magnus step is of order 6: halving the step divides the error by about 2^6.
+TEST(RotationTensor, MagnusStepHasOrderSix) {
+    const double T = 2.0;
+    const Matrix3d ref = rotation_by_odeint(moving_w, T, 1e-15);
+    double previous = 0;
+    for (int n : {8, 16, 32}) {
+        Matrix3d Q = Matrix3d::Identity();
+        const double h = T / n;
+        for (int k = 0; k < n; ++k) Q = num::rotation_exp(num::magnus6_step(moving_w, k * h, h)) * Q;
+        const double err = (Q - ref).norm();
+        if (previous > 0) {
+            // tolerance: the observed order lies within [5.3, 7] (2^5.3 ~ 40), well above a 4th-order method's 16
+            EXPECT_GT(previous / err, 40.0) << "n = " << n << ": error " << err << " after " << previous;
+        }
+        previous = err;
+    }
+}
+
+// Fixed direction: Q must equal the closed form (VI.2.12) with alpha = integral of a signed
+// rate that changes sign: w(t) = (a + b sin ct) u, alpha = a t + (b/c)(1 - cos ct).
+TEST(RotationTensor, FixedDirectionMatchesTheClosedFormOverManyTurns) {
+    const Vector3d u = Vector3d(2, -1, 2) / 3.0;
+    const double a = 0.3, b = 1.1, c = 0.7;  // |b| > |a|: the rate changes sign
+    const angular_velocity w = [&](double t) { return (a + b * std::sin(c * t)) * u; };
+    const std::vector<double> times{0.0, 1.0, 10.0, 100.0, 1000.0, 3000.0};
+    const num::rotation_tensor_result res = num::rotation_tensor(w, times);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const double t = times[k];
+        const double alpha = a * t + (b / c) * (1 - std::cos(c * t));
+        const Matrix3d closed = num::fixed_direction_rotation(u, alpha);
+        // tolerance: 1e-13 (the goal) plus the rounding of the reference's own alpha (2 ulps of
+        // alpha ~ 900 at t = 3000, about 150 turns) and ~sqrt(steps) ulps of the ~9e4 products
+        const double tol = 1e-13 + 4.5e-16 * std::abs(alpha) + 1.1e-16 * std::sqrt(double(res.steps));
+        EXPECT_LT((res.Q[k] - closed).norm(), tol) << "t = " << t;
+        EXPECT_LT((res.Q[k].transpose() * res.Q[k] - Matrix3d::Identity()).norm(), 1e-14) << "t = " << t;
+    }
+}
+
+TEST(RotationTensor, MovingAxisAgreesWithOdeintAndStaysOrthogonal) {
+    const std::vector<double> times{0.5, 5.0, 50.0};
+    const num::rotation_tensor_result res = num::rotation_tensor(moving_w, times);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const Matrix3d ref = rotation_by_odeint(moving_w, times[k], 1e-14);
+        // tolerance: odeint's rkf78 at 1e-14 drifts by ~1e-12 over t = 50 (the 9 components are not kept orthogonal)
+        EXPECT_LT((res.Q[k] - ref).norm(), 1e-11) << "t = " << times[k];
+        EXPECT_LT((res.Q[k].transpose() * res.Q[k] - Matrix3d::Identity()).norm(), 1e-14);
+        EXPECT_NEAR(res.Q[k].determinant(), 1.0, 1e-14);
+    }
+}
+
+// Thm VI.3.1.1: F_{-w} = Q is a proper rotation: it keeps lengths, dot and cross products.
+TEST(RotationTensor, TheOperatorKeepsLengthsDotAndCrossProducts) {
+    const Matrix3d Q = num::rotation_tensor(moving_w, {7.3}).Q[0];
+    const Vector3d x(0.3, -1.2, 2.0), y(-0.7, 0.4, 1.1);
+    // tolerance: a few ulps (Q is orthogonal to rounding)
+    EXPECT_NEAR((Q * x).norm(), x.norm(), 4e-15 * x.norm());
+    EXPECT_NEAR((Q * x).dot(Q * y), x.dot(y), 1e-14);
+    EXPECT_LT(((Q * x).cross(Q * y) - Q * x.cross(y)).norm(), 1e-14);
+}
+
+TEST(RotationTensor, BadInputIsRefused) {
+    EXPECT_THROW(num::rotation_tensor(moving_w, {2.0, 1.0}), type_error);
+    EXPECT_THROW(num::rotation_tensor(moving_w, {-1.0}), type_error);
+    const angular_velocity bad = [](double t) { return Vector3d(1.0 / (t - 1.0), 0, 0); };
+    EXPECT_THROW(num::rotation_tensor(bad, {2.0}), symrep::error);
+}
+
+// ---------------------------------------------------------------------------
+// Kepler
+
+TEST(Kepler, StumpffFunctionsAreContinuousAcrossTheSeriesBoundary) {
+    for (double z : {-1.0, 1.0}) {
+        const double below = z * (1 - 1e-12), above = z * (1 + 1e-12);
+        EXPECT_NEAR(num::stumpff_c2(below), num::stumpff_c2(above), 1e-13);
+        EXPECT_NEAR(num::stumpff_c3(below), num::stumpff_c3(above), 1e-13);
+    }
+    EXPECT_DOUBLE_EQ(num::stumpff_c2(0), 0.5);
+    EXPECT_DOUBLE_EQ(num::stumpff_c3(0), 1.0 / 6.0);
+    EXPECT_NEAR(num::stumpff_c2(4.0), (1 - std::cos(2.0)) / 4.0, 1e-16);
+    EXPECT_NEAR(num::stumpff_c3(-4.0), (std::sinh(2.0) - 2.0) / 8.0, 1e-15);
+}
+
+struct orbit_case {
+    const char* name;
+    Vector3d r0, v0;
+};
+
+// mu = 1: an ellipse (e ~ 0.6), a near-parabola, a hyperbola, and a nearly radial ellipse.
+const orbit_case orbits[] = {
+    {"ellipse", Vector3d(1.0, 0.0, 0.2), Vector3d(0.1, 1.2, 0.3)},
+    {"near-parabola", Vector3d(1.0, 0.2, 0.0), Vector3d(0.0, std::sqrt(2.0 / std::sqrt(1.04)) * (1 + 1e-9), 0.1)},
+    {"hyperbola", Vector3d(0.5, -0.3, 0.1), Vector3d(0.4, 2.1, -0.5)},
+    {"eccentric", Vector3d(2.0, 0.0, 0.0), Vector3d(0.0, 0.05, 0.02)},
+};
+
+TEST(Kepler, AgreesWithOdeintOnEveryConic) {
+    for (const orbit_case& c : orbits) {
+        for (double t : {0.3, 2.0, 9.0}) {
+            const num::kepler_state k = num::kepler_propagate(1.0, c.r0, c.v0, t);
+            const num::rhs_function rhs = [](double, const double* y, double* dy) {
+                const Vector3d p(y[0], y[1], y[2]);
+                const double r3 = std::pow(p.norm(), 3);
+                for (int i = 0; i < 3; ++i) {
+                    dy[i] = y[3 + i];
+                    dy[3 + i] = -p[i] / r3;
+                }
+            };
+            num::integration_options o;
+            o.rel_tol = o.abs_tol = 1e-14;
+            const auto res = num::integrate(rhs, 0.0, {c.r0.x(), c.r0.y(), c.r0.z(), c.v0.x(), c.v0.y(), c.v0.z()},
+                                            {t}, o);
+            const Vector3d r = res.states.row(0).head<3>(), v = res.states.row(0).tail<3>();
+            // tolerance: rkf78 at 1e-14 through a pericentre passage keeps ~1e-11 relative
+            EXPECT_LT((k.position - r).norm(), 1e-10 * r.norm()) << c.name << " t = " << t;
+            EXPECT_LT((k.velocity - v).norm(), 1e-10 * v.norm()) << c.name << " t = " << t;
+        }
+    }
+}
+
+TEST(Kepler, EnergyAndAngularMomentumAreKeptOverAThousandOrbits) {
+    const orbit_case& c = orbits[0];
+    const double E0 = num::kepler_energy(1.0, c.r0, c.v0);
+    const Vector3d L0 = c.r0.cross(c.v0);
+    const double period = 2 * std::numbers::pi / std::sqrt(std::pow(-2 * E0, 3));
+    for (double t : {1.0, 100.0, 1000.0 * period + 0.37}) {
+        const num::kepler_state k = num::kepler_propagate(1.0, c.r0, c.v0, t);
+        // tolerance: a few ulps of the energy and of |L| (the closed form has no drift)
+        EXPECT_NEAR(num::kepler_energy(1.0, k.position, k.velocity), E0, 1e-14 * std::abs(E0)) << t;
+        EXPECT_LT((k.position.cross(k.velocity) - L0).norm(), 1e-14 * L0.norm()) << t;
+    }
+    // one period later the orbit is back where it started
+    const num::kepler_state back = num::kepler_propagate(1.0, c.r0, c.v0, period);
+    EXPECT_LT((back.position - c.r0).norm(), 1e-14 * c.r0.norm());
+    // backwards in time undoes forwards
+    const num::kepler_state fwd = num::kepler_propagate(1.0, c.r0, c.v0, 3.3);
+    const num::kepler_state bwd = num::kepler_propagate(1.0, fwd.position, fwd.velocity, -3.3);
+    EXPECT_LT((bwd.position - c.r0).norm(), 1e-13);
+}
+
+TEST(Kepler, BadInputIsRefused) {
+    EXPECT_THROW(num::kepler_propagate(0.0, Vector3d(1, 0, 0), Vector3d(0, 1, 0), 1.0), domain_error);
+    EXPECT_THROW(num::kepler_propagate(1.0, Vector3d(0, 0, 0), Vector3d(0, 1, 0), 1.0), domain_error);
+    // radial orbits meet the centre: refused
+    EXPECT_THROW(num::kepler_propagate(1.0, Vector3d(1, 0, 0), Vector3d(0, 0, 0), 5.0), domain_error);
+}
+
+// ---------------------------------------------------------------------------
+// Reduction (Thm VI.3.2.1) against the rotating-frame ODE as stated
+
+void expect_reduction_agrees(const rotating_frame_problem& P, const std::vector<double>& times, double tol,
+                             const char* what) {
+    const std::vector<rotating_frame_state> red = solve_by_reduction(P, times);
+    num::integration_options o;
+    o.rel_tol = o.abs_tol = 1e-13;
+    const std::vector<rotating_frame_state> ode = integrate_rotating_frame(P, times, o);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const double scale_r = std::max(1.0, ode[k].r.norm()), scale_v = std::max(1.0, ode[k].v.norm());
+        EXPECT_LT((red[k].r - ode[k].r).norm(), tol * scale_r) << what << " r at t = " << times[k];
+        EXPECT_LT((red[k].v - ode[k].v).norm(), tol * scale_v) << what << " r' at t = " << times[k];
+    }
+    // first integrals (VI.3.140-141) along the reduced solution
+    const std::optional<double> E0 = energy_integral(P, 0.0, {P.r0, P.v0});
+    const double L0 = angular_momentum_integral(P, 0.0, {P.r0, P.v0}).norm();
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        if (E0) {
+            EXPECT_NEAR(*energy_integral(P, times[k], red[k]), *E0, 1e-12 * std::max(1.0, std::abs(*E0))) << what;
+        }
+        EXPECT_NEAR(angular_momentum_integral(P, times[k], red[k]).norm(), L0, 1e-12 * std::max(1.0, L0)) << what;
+    }
+}
+
+// tolerance for all: odeint's rkf78 at 1e-13 on the rotating-frame ODE over t <= 20 keeps ~1e-10
+TEST(RotatingFrame, KeplerInAnArbitrarilyRotatingFrame) {
+    rotating_frame_problem P;
+    P.w = moving_w;
+    P.w_dot = moving_w_dot;
+    P.field = central_field::kepler(1.0);
+    P.r0 = Vector3d(1.0, 0.1, -0.2);
+    P.v0 = Vector3d(0.05, 0.6, 0.1);
+    expect_reduction_agrees(P, {0.5, 3.0, 12.0}, 1e-9, "Kepler (VI.3.153)");
+}
+
+TEST(RotatingFrame, FoucaultForAnArbitraryRotation) {
+    rotating_frame_problem P;
+    P.w = moving_w;
+    P.w_dot = moving_w_dot;
+    P.field = central_field::harmonic(0.38 * 0.38);
+    P.r0 = Vector3d(3.0, 0.0, 0.0);
+    P.v0 = Vector3d(0.0, 0.0, 0.0);
+    expect_reduction_agrees(P, {1.0, 7.0, 20.0}, 1e-9, "Foucault (VI.3.150)");
+}
+
+TEST(RotatingFrame, FreeParticleAndAGeneralFieldWithASignChangingFixedAxis) {
+    const Vector3d u = Vector3d(0, 0.6, 0.8);
+    const double a = 0.2, b = 0.9, c = 1.7;
+    rotating_frame_problem P;
+    P.w = [=](double t) { return (a + b * std::sin(c * t)) * u; };
+    P.w_dot = [=](double t) { return (b * c * std::cos(c * t)) * u; };
+    P.axis = u;
+    P.angle = [=](double t) { return a * t + (b / c) * (1 - std::cos(c * t)); };
+    P.r0 = Vector3d(1.0, -0.5, 0.3);
+    P.v0 = Vector3d(0.2, 0.1, -0.4);
+    P.field = central_field::none();
+    expect_reduction_agrees(P, {0.7, 4.0, 15.0}, 1e-9, "free (VI.2.38 with g = 0)");
+    // f(p) = p^3 (no closed form for psi: integrated in the inertial frame), V = p^4/4
+    P.field = central_field::general([](double p) { return p * p * p; }, [](double p) { return p * p * p * p / 4; });
+    expect_reduction_agrees(P, {0.7, 4.0, 15.0}, 1e-9, "f(p) = p^3 (Thm VI.2.2.3.1)");
+    // the closed-form Q of the fixed axis and the numeric Q agree
+    rotating_frame_problem Pn = P;
+    Pn.axis.reset();
+    Pn.angle = nullptr;
+    P.field = Pn.field = central_field::harmonic(2.0);
+    const auto closed = solve_by_reduction(P, {15.0});
+    const auto numeric = solve_by_reduction(Pn, {15.0});
+    EXPECT_LT((closed[0].r - numeric[0].r).norm(), 1e-12 * closed[0].r.norm());
+}
+
+}  // namespace
