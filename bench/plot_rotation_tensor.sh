@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Work-precision chart of the rotation tensor (docs/performance.md, "Rotation tensor"):
+# runs the RotationTensor/RotatingKepler benchmarks of bench/bench_rotation_tensor.cpp
+# (unless a CSV of theirs is given) and draws error against CPU time with gnuplot.
+#
+# usage: bash bench/plot_rotation_tensor.sh [results.csv] [build-dir]
+# Output: docs/figures/rotation_tensor_wp.csv and docs/figures/rotation_tensor_wp.png.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+csv=${1:-}
+build=${2:-build}
+out=docs/figures
+mkdir -p "$out"
+if [ -z "$csv" ]; then
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench
+    csv=$(mktemp)
+    "$build"/symrep_bench --benchmark_filter='RotationTensor|RotatingKepler' --benchmark_min_time=0.2 \
+        --benchmark_format=csv > "$csv" 2>/dev/null
+fi
+# method, tolerance exponent, cpu microseconds, error, orthogonality, w evaluations
+{
+    echo "method,tolerance,cpu_us,error,orthogonality,w_evals"
+    grep -E '^"(RotationTensor|RotatingKepler)' "$csv" | tr -d '"' |
+        awk -F, '{split($1, a, "/"); printf "%s,1e-%s,%s,%s,%s,%s\n", a[1], a[2], $4, $11, $12, $13}'
+} > "$out/rotation_tensor_wp.csv"
+command -v gnuplot >/dev/null || { echo "gnuplot is not installed; the data are in $out/rotation_tensor_wp.csv" >&2; exit 1; }
+gnuplot <<GP
+set terminal pngcairo size 1100,480 font ",10"
+set output "$out/rotation_tensor_wp.png"
+set datafile separator ","
+set multiplot layout 1,2
+set logscale xy
+set grid
+set format y "10^{%L}"
+set xlabel "CPU time per trajectory (µs)"
+set ylabel "error at t = 200"
+set key bottom left
+set title "Q' = -W Q, w = (0.7 sin 1.3t, 0.4 cos 2.1t, 0.5), t = 200"
+plot "< grep Magnus6 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 7 title "Magnus 6 on SO(3)", \
+     "< grep Odeint9_rkf78 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 5 title "rkf78, 9 components", \
+     "< grep Odeint9_dopri5 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 9 title "dopri5, 9 components"
+set title "Kepler in that frame (VI.3.153): r at t = 200"
+set ylabel "relative error of r"
+plot "< grep RotatingKepler_Reduction $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 7 title "reduction r = Q psi (Magnus + universal variables)", \
+     "< grep RotatingKepler_Odeint $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 5 title "rkf78 on the rotating-frame ODE"
+unset multiplot
+GP
+echo "wrote $out/rotation_tensor_wp.png"
