@@ -11,10 +11,17 @@
 // `orthogonality` (|Q^T Q - I|) are the chart's data:
 //   build/symrep_bench --benchmark_filter=RotationTensor --benchmark_format=csv > rt.csv
 //   bash bench/plot_rotation_tensor.sh rt.csv        (docs/figures/rotation_tensor_wp.png)
+// RelativeMotion_* (LVLH of a circular target at 7000 km, separations 1 m to
+// 100 km, 1 and 10 orbits): the cost of the exact relative motion and the
+// relative error of the Clohessy-Wiltshire model against it (counter
+// `cw_relative_error`; docs/figures/relative_motion_cw.png).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <numbers>
+#include <utility>
 
+#include "mechanics/relative_motion.h"
 #include "mechanics/rotating_frame.h"
 #include "numeric/integrate.h"
 #include "numeric/rotation_tensor.h"
@@ -47,7 +54,7 @@ void RotationTensor_Magnus6(benchmark::State& state) {
     num::rotation_tensor_result r;
     for (auto _ : state) {
         r = num::rotation_tensor(omega, {T}, o);
-        benchmark::DoNotOptimize(r.Q[0](0, 0));
+        benchmark::DoNotOptimize(std::as_const(r));
     }
     state.counters["error"] = (r.Q[0] - reference()).norm();
     state.counters["w_evals"] = double(r.evaluations);
@@ -111,7 +118,7 @@ void RotatingKepler_Reduction(benchmark::State& state) {
     Vector3d r;
     for (auto _ : state) {
         r = mechanics::solve_by_reduction(P, {T}, o)[0].r;
-        benchmark::DoNotOptimize(r(0));
+        benchmark::DoNotOptimize(std::as_const(r));
     }
     state.counters["error"] = (r - kepler_reference()).norm() / kepler_reference().norm();
 }
@@ -124,10 +131,29 @@ void RotatingKepler_Odeint_rkf78(benchmark::State& state) {
     Vector3d r;
     for (auto _ : state) {
         r = mechanics::integrate_rotating_frame(P, {T}, o)[0].r;
-        benchmark::DoNotOptimize(r(0));
+        benchmark::DoNotOptimize(std::as_const(r));
     }
     state.counters["error"] = (r - kepler_reference()).norm() / kepler_reference().norm();
 }
 BENCHMARK(RotatingKepler_Odeint_rkf78)->DenseRange(4, 14, 2)->Unit(benchmark::kMicrosecond);
+
+// Exact relative motion (two Kepler orbits rotated into the LVLH frame) and the
+// error of the Clohessy-Wiltshire model: range(0) = log10(separation in m), range(1) = orbits.
+void RelativeMotion_ExactAgainstCW(benchmark::State& state) {
+    const double mu = 398600.4418, r = 7000.0, n = std::sqrt(mu / (r * r * r));
+    const Vector3d R0(r, 0, 0), V0(0, n * r, 0);
+    const double d = std::pow(10.0, double(state.range(0))) / 1000.0;  // km
+    const double t = double(state.range(1)) * 2 * std::numbers::pi / n;
+    const mechanics::relative_state s{d * Vector3d(0.3, -0.8, 0.5).normalized(), 1e-4 * d * Vector3d(0.2, 0.1, -0.3)};
+    mechanics::relative_state exact;
+    for (auto _ : state) {
+        exact = mechanics::relative_motion_exact(mu, R0, V0, s, t);
+        benchmark::DoNotOptimize(std::as_const(exact));
+    }
+    const mechanics::relative_state cw = mechanics::clohessy_wiltshire(n, s, t);
+    state.counters["separation_m"] = d * 1000.0;
+    state.counters["cw_relative_error"] = (cw.position - exact.position).norm() / exact.position.norm();
+}
+BENCHMARK(RelativeMotion_ExactAgainstCW)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {1, 10}})->Unit(benchmark::kMicrosecond);
 
 }  // namespace

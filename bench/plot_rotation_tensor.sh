@@ -3,27 +3,36 @@
 # runs the RotationTensor/RotatingKepler benchmarks of bench/bench_rotation_tensor.cpp
 # (unless a CSV of theirs is given) and draws error against CPU time with gnuplot.
 #
-# usage: bash bench/plot_rotation_tensor.sh [results.csv] [build-dir]
-# Output: docs/figures/rotation_tensor_wp.csv and docs/figures/rotation_tensor_wp.png.
+# usage: bash bench/plot_rotation_tensor.sh [build-dir]          (default build dir: build)
+#        PLOT_ONLY=1 bash bench/plot_rotation_tensor.sh   (redraw from the CSV files in docs/figures)
+# Output: docs/figures/rotation_tensor_wp.{csv,png} and docs/figures/relative_motion_cw.{csv,png}.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-csv=${1:-}
-build=${2:-build}
+build=${1:-build}
 out=docs/figures
 mkdir -p "$out"
-if [ -z "$csv" ]; then
-    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-    cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench
-    csv=$(mktemp)
-    "$build"/symrep_bench --benchmark_filter='RotationTensor|RotatingKepler' --benchmark_min_time=0.2 \
-        --benchmark_format=csv > "$csv" 2>/dev/null
-fi
+if [ -z "${PLOT_ONLY:-}" ]; then
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench
+csv=$(mktemp)
+rel=$(mktemp)
+# two runs: the CSV reporter wants the same counters in every row of one run
+"$build"/symrep_bench --benchmark_filter='RotationTensor|RotatingKepler' --benchmark_min_time=0.2 \
+    --benchmark_format=csv > "$csv" 2>/dev/null
+"$build"/symrep_bench --benchmark_filter='RelativeMotion' --benchmark_format=csv > "$rel" 2>/dev/null
 # method, tolerance exponent, cpu microseconds, error, orthogonality, w evaluations
 {
     echo "method,tolerance,cpu_us,error,orthogonality,w_evals"
     grep -E '^"(RotationTensor|RotatingKepler)' "$csv" | tr -d '"' |
         awk -F, '{split($1, a, "/"); printf "%s,1e-%s,%s,%s,%s,%s\n", a[1], a[2], $4, $11, $12, $13}'
 } > "$out/rotation_tensor_wp.csv"
+# separation (m), orbits, CPU microseconds of the exact form, relative error of Clohessy-Wiltshire
+{
+    echo "separation_m,orbits,exact_cpu_us,cw_relative_error"
+    grep -E '^"RelativeMotion' "$rel" | tr -d '"' |
+        awk -F, '{split($1, a, "/"); printf "%s,%s,%s,%s\n", $12, a[3], $4, $11}'
+} > "$out/relative_motion_cw.csv"
+fi
 command -v gnuplot >/dev/null || { echo "gnuplot is not installed; the data are in $out/rotation_tensor_wp.csv" >&2; exit 1; }
 gnuplot <<GP
 set terminal pngcairo size 1100,480 font ",10"
@@ -45,5 +54,14 @@ set ylabel "relative error of r"
 plot "< grep RotatingKepler_Reduction $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 7 title "reduction r = Q psi (Magnus + universal variables)", \
      "< grep RotatingKepler_Odeint $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 5 title "rkf78 on the rotating-frame ODE"
 unset multiplot
+set terminal pngcairo size 640,480 font ",10"
+set output "$out/relative_motion_cw.png"
+unset multiplot
+set title "Clohessy-Wiltshire against the exact relative motion (circular LEO, 7000 km)"
+set xlabel "initial separation (m)"
+set ylabel "relative error of the CW position"
+set key top left
+plot "< awk -F, '\$2 == 1' $out/relative_motion_cw.csv" using 1:4 with linespoints pt 7 title "after 1 orbit", \
+     "< awk -F, '\$2 == 10' $out/relative_motion_cw.csv" using 1:4 with linespoints pt 5 title "after 10 orbits"
 GP
 echo "wrote $out/rotation_tensor_wp.png"

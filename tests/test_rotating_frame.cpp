@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "mechanics/relative_motion.h"
 #include "mechanics/rotating_frame.h"
 #include "numeric/integrate.h"
 #include "numeric/kepler.h"
@@ -277,3 +278,86 @@ TEST(RotatingFrame, FreeParticleAndAGeneralFieldWithASignChangingFixedAxis) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------
+// Exact relative orbital motion (LVLH) and Clohessy-Wiltshire
+
+namespace relative {
+
+using namespace symrep::mechanics;
+
+// The relative ODE as stated in the LVLH frame (w = (0, 0, h/R^2), w' = (0, 0, -2 h (R.V)/R^4)),
+// with the target's own orbit integrated alongside: state R, V (inertial), rho, rho' (LVLH).
+relative_state integrate_lvlh(double mu, const Vector3d& R0, const Vector3d& V0, const relative_state& s, double t) {
+    const num::rhs_function rhs = [mu](double, const double* y, double* dy) {
+        const Vector3d R(y[0], y[1], y[2]), V(y[3], y[4], y[5]), p(y[6], y[7], y[8]), v(y[9], y[10], y[11]);
+        const double r = R.norm(), h = R.cross(V).norm();
+        const Vector3d w(0, 0, h / (r * r)), wd(0, 0, -2 * h * R.dot(V) / (r * r * r * r));
+        const Vector3d Rl(r, 0, 0);
+        const Vector3d a = -2 * w.cross(v) - w.cross(w.cross(p)) - wd.cross(p) -
+                           mu * (Rl + p) / std::pow((Rl + p).norm(), 3) + mu * Rl / (r * r * r);
+        const Vector3d A = -mu * R / (r * r * r);
+        for (int i = 0; i < 3; ++i) {
+            dy[i] = V[i];
+            dy[3 + i] = A[i];
+            dy[6 + i] = v[i];
+            dy[9 + i] = a[i];
+        }
+    };
+    num::integration_options o;
+    o.rel_tol = 1e-13;
+    o.abs_tol = 1e-13;
+    std::vector<double> y0(12);
+    for (int i = 0; i < 3; ++i) {
+        y0[i] = R0[i];
+        y0[3 + i] = V0[i];
+        y0[6 + i] = s.position[i];
+        y0[9 + i] = s.velocity[i];
+    }
+    const auto res = num::integrate(rhs, 0.0, y0, {t}, o);
+    return {res.states.row(0).segment<3>(6).transpose(), res.states.row(0).segment<3>(9).transpose()};
+}
+
+// units: km, s; mu of the Earth
+const double mu = 398600.4418;
+
+TEST(RelativeMotion, ExactSolutionSolvesTheLvlhEquationForAnEccentricTarget) {
+    const Vector3d R0(7000.0, 0.0, 0.0);
+    const Vector3d V0(0.0, 8.5, 1.2);  // e ~ 0.3
+    const relative_state s{Vector3d(12.0, -30.0, 4.0), Vector3d(0.01, -0.02, 0.005)};
+    for (double t : {600.0, 5000.0, 20000.0}) {
+        const relative_state exact = relative_motion_exact(mu, R0, V0, s, t);
+        const relative_state ode = integrate_lvlh(mu, R0, V0, s, t);
+        // tolerance: the exact form subtracts two 7000-km positions (1e-16 * 7000 km = 1e-12 km)
+        // and odeint at 1e-13 over up to 3 orbits keeps ~1e-9 relative
+        EXPECT_LT((exact.position - ode.position).norm(), 1e-8 * ode.position.norm()) << t;
+        EXPECT_LT((exact.velocity - ode.velocity).norm(), 1e-8 * ode.velocity.norm()) << t;
+    }
+    // no separation stays no separation
+    const relative_state zero = relative_motion_exact(mu, R0, V0, {Vector3d::Zero(), Vector3d::Zero()}, 3000.0);
+    EXPECT_LT(zero.position.norm(), 1e-9);
+}
+
+TEST(RelativeMotion, ClohessyWiltshireIsTheFirstOrderLimitForACircularTarget) {
+    const double r = 7000.0, n = std::sqrt(mu / (r * r * r));
+    const Vector3d R0(r, 0, 0), V0(0, n * r, 0);
+    const double T = 2 * std::numbers::pi / n;
+    double previous = 0;
+    for (double d : {0.01, 0.1, 1.0, 10.0}) {  // separations of 10 m to 10 km
+        const Vector3d dir = Vector3d(0.3, -0.8, 0.5).normalized();
+        const relative_state s{d * dir, 1e-4 * d * Vector3d(0.2, 0.1, -0.3)};
+        const relative_state exact = relative_motion_exact(mu, R0, V0, s, T);
+        const relative_state cw = clohessy_wiltshire(n, s, T);
+        const double rel = (cw.position - exact.position).norm() / exact.position.norm();
+        // the neglected terms are of second order: the relative error grows like d/R
+        EXPECT_LT(rel, 20.0 * d / r) << d;
+        if (previous > 0) {
+            // tolerance: ten times the separation gives 5 to 20 times the relative error
+            EXPECT_GT(rel / previous, 5.0) << d;
+            EXPECT_LT(rel / previous, 20.0) << d;
+        }
+        previous = rel;
+    }
+}
+
+}  // namespace relative

@@ -1,0 +1,58 @@
+// symrep/mechanics/relative_motion.cpp -- exact relative orbital motion and the
+// Clohessy-Wiltshire model (see relative_motion.h).
+#include "mechanics/relative_motion.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "numeric/kepler.h"
+
+namespace symrep::mechanics {
+
+Eigen::Matrix3d lvlh_axes(const Eigen::Vector3d& R, const Eigen::Vector3d& V) {
+    const Eigen::Vector3d h = R.cross(V);
+    if (h.norm() == 0 || R.norm() == 0)
+        throw domain_error("LVLH frame: the target's orbit is radial (R x V = 0), its frame has no normal");
+    const Eigen::Vector3d x = R.normalized(), z = h.normalized(), y = z.cross(x);
+    Eigen::Matrix3d Ct;
+    Ct.row(0) = x.transpose();
+    Ct.row(1) = y.transpose();
+    Ct.row(2) = z.transpose();
+    return Ct;
+}
+
+Eigen::Vector3d lvlh_rate(const Eigen::Vector3d& R, const Eigen::Vector3d& V) {
+    return R.cross(V) / R.squaredNorm();
+}
+
+relative_state relative_motion_exact(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
+                                     const relative_state& start, double t) {
+    // the chaser in inertial components: d/dt (C rho) = C rho' + w x (C rho)
+    const Eigen::Matrix3d C0 = lvlh_axes(R0, V0).transpose();
+    const Eigen::Vector3d d0 = C0 * start.position;
+    const Eigen::Vector3d rc0 = R0 + d0;
+    const Eigen::Vector3d vc0 = V0 + C0 * start.velocity + lvlh_rate(R0, V0).cross(d0);
+    // both orbits in closed form (the inertial problems of Thm VI.3.2.1), then the frame at t
+    const num::kepler_state target = num::kepler_propagate(mu, R0, V0, t);
+    const num::kepler_state chaser = num::kepler_propagate(mu, rc0, vc0, t);
+    const Eigen::Matrix3d Ct = lvlh_axes(target.position, target.velocity);
+    const Eigen::Vector3d d = chaser.position - target.position;
+    const Eigen::Vector3d w = lvlh_rate(target.position, target.velocity);
+    return {Ct * d, Ct * (chaser.velocity - target.velocity - w.cross(d))};
+}
+
+relative_state clohessy_wiltshire(double n, const relative_state& s, double t) {
+    const double c = std::cos(n * t), sn = std::sin(n * t), nt = n * t;
+    const Eigen::Vector3d& p = s.position;
+    const Eigen::Vector3d& v = s.velocity;
+    relative_state out;
+    out.position = Eigen::Vector3d((4 - 3 * c) * p.x() + sn / n * v.x() + 2 / n * (1 - c) * v.y(),
+                                   6 * (sn - nt) * p.x() + p.y() - 2 / n * (1 - c) * v.x() + (4 * sn - 3 * nt) / n * v.y(),
+                                   c * p.z() + sn / n * v.z());
+    out.velocity = Eigen::Vector3d(3 * n * sn * p.x() + c * v.x() + 2 * sn * v.y(),
+                                   -6 * n * (1 - c) * p.x() - 2 * sn * v.x() + (4 * c - 3) * v.y(),
+                                   -n * sn * p.z() + c * v.z());
+    return out;
+}
+
+}  // namespace symrep::mechanics
