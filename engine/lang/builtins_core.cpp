@@ -214,11 +214,14 @@ void register_core_builtins(registry& r) {
             });
         });
     add(r, "simplify", "simplify(e)",
-        "Simplifies a rational expression (currently the same as normal after expand).", "",
+        "Simplifies an expression: rational expressions to one normalized fraction, radicals and logarithms "
+        "of rationals over primes (sqrt(2)*sqrt(8) is 4, sqrt(12) is 2*sqrt(3)), trigonometric and "
+        "hyperbolic identities that the zero test proves (cos(p)^2 + sin(p)^2 is 1); at least what == "
+        "decides (docs/language.md, \"Equality\").", "",
         "simplify(1/x + 1/y)", 1, 1, [](const builtin& b, const args_t& a, context&) {
             return map_value(a[0], b, [&](const ex& x) {
                 guard_expansion(x, b.name.c_str(), true);
-                return GiNaC::normal(GiNaC::expand(x));
+                return simplify_scalar(x);
             });
         });
     add(r, "factor", "factor(e)", "Factors a polynomial (or the numerator and denominator of a rational "

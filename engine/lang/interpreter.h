@@ -28,6 +28,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "lang/value.h"
+#include "scalar/equality.h"
 #include "vector/vector.h"
 
 namespace symrep::rules {
@@ -200,6 +201,17 @@ GiNaC::ex as_literal(const value& v);
 /// The vector operand of `op` on `side` ("left", "right"): an expression or a triple; type_error otherwise.
 GiNaC::ex vector_operand(const std::string& op, const value& v, const char* side);
 /// Language equality (==): exact for expressions (normal(a - b) == 0), elements, lists.
+/// The three-valued comparison of two values (==): yes (proved equal), no
+/// (proved different: different kinds or shapes, or a witness point where the
+/// difference is not 0; scalar/equality.h) or unknown, with the difference
+/// that could not be decided.
+struct equality {
+    truth result = truth::unknown;
+    std::string undecided;  ///< for unknown: the difference, printed
+    std::string witness;    ///< for no: where the difference is not 0 ("at x = 1/2"), may be empty
+};
+equality compare_values(const value& a, const value& b);
+/// == as the language says it: true, false, or domain_error naming the undecided difference.
 bool values_equal(const value& a, const value& b);
 
 }  // namespace symrep::lang

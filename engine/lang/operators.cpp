@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "syntax/parser.h"
 #include "output/printer.h"
@@ -258,54 +260,127 @@ ex vector_operand(const std::string& op, const value& v, const char* side) {
     throw type_error("the " + std::string(side) + " operand of '" + op + "' must be a vector, not " + article(v));
 }
 
-bool values_equal(const value& a, const value& b) {
+namespace {
+
+/// A printed expression cut to about 200 characters for a message.
+std::string shortened(const std::string& s) {
+    if (s.size() <= 200) return s;
+    return s.substr(0, 120) + " ... " + s.substr(s.size() - 60) + " (" + std::to_string(s.size()) + " characters)";
+}
+
+/// The decision for one scalar difference, with the text of what is undecided.
+equality decide(const ex& diff) {
+    const zero_decision d = decide_zero(diff);
+    equality e;
+    e.result = d.is_zero;
+    if (d.is_zero == truth::unknown) e.undecided = print_ex(diff);
+    if (d.is_zero == truth::no) e.witness = witness_text(d);
+    return e;
+}
+
+/// All of several decisions: no if one is no, unknown if one is unknown, yes otherwise.
+equality all_of(const std::vector<equality>& parts) {
+    equality out;
+    out.result = truth::yes;
+    for (const equality& p : parts) {
+        if (p.result == truth::no) return p;
+        if (p.result == truth::unknown && out.result == truth::yes) out = p;
+    }
+    return out;
+}
+
+equality known(bool b) {
+    equality e;
+    e.result = b ? truth::yes : truth::no;
+    return e;
+}
+
+/// Vectors by components: each vector symbol v becomes [v_1, v_2, v_3] (real symbols),
+/// so that a witness is a point of the components.
+equality decide_vectors(const ex& x, const ex& y) {
+    if (symrep::equal(x, y)) return known(true);
+    std::map<ex, ex, GiNaC::ex_is_less> m;
+    for (const ex& v : vector_symbols(x - y)) {
+        std::ostringstream os;
+        os << v;
+        const std::string n = os.str();
+        m[v] = vector_literal(GiNaC::realsymbol(n + "_1"), GiNaC::realsymbol(n + "_2"), GiNaC::realsymbol(n + "_3"));
+    }
+    const ex c = subs_components(x - y, m);
+    if (!is_a<GiNaC::matrix>(c)) return decide(c);
+    std::vector<equality> parts;
+    for (std::size_t i = 0; i < c.nops(); ++i) parts.push_back(decide(c.op(i)));
+    return all_of(parts);
+}
+
+}  // namespace
+
+equality compare_values(const value& a, const value& b) {
     if (a.is_ex() && b.is_ex()) {
         const ex& x = a.as_ex();
         const ex& y = b.as_ex();
         if (!is_a<GiNaC::matrix>(x) && !is_a<GiNaC::matrix>(y) && (has_matrix(x) || has_matrix(y)))
-            return x.is_equal(y);  // matrices inside relations and the like: never subtracted from numbers
-        if (is_vector_ex(a) || is_vector_ex(b)) return symrep::equal(x, y);  // exact, by components
+            return known(x.is_equal(y));  // matrices inside relations and the like: never subtracted from numbers
+        if (is_vector_ex(a) || is_vector_ex(b)) return decide_vectors(x, y);  // exact, by components
         if (is_a<GiNaC::matrix>(x) || is_a<GiNaC::matrix>(y)) {
-            if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return false;
+            if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return known(false);
             const auto& m = ex_to<GiNaC::matrix>(x);
             const auto& n = ex_to<GiNaC::matrix>(y);
-            if (m.rows() != n.rows() || m.cols() != n.cols()) return false;
+            if (m.rows() != n.rows() || m.cols() != n.cols()) return known(false);
+            std::vector<equality> parts;
             for (unsigned i = 0; i < m.rows(); ++i)
-                for (unsigned j = 0; j < m.cols(); ++j)
-                    if (!is_zero_scalar(m(i, j) - n(i, j))) return false;
-            return true;
+                for (unsigned j = 0; j < m.cols(); ++j) parts.push_back(decide(m(i, j) - n(i, j)));
+            return all_of(parts);
         }
         if (is_a<GiNaC::relational>(x) || is_a<GiNaC::relational>(y)) {
-            if (!is_a<GiNaC::relational>(x) || !is_a<GiNaC::relational>(y)) return false;
+            if (!is_a<GiNaC::relational>(x) || !is_a<GiNaC::relational>(y)) return known(false);
             using F = GiNaC::info_flags;
             for (unsigned f : {F::relation_equal, F::relation_not_equal, F::relation_less,
                                F::relation_less_or_equal, F::relation_greater, F::relation_greater_or_equal})
-                if (x.info(f) != y.info(f)) return false;
-            return is_zero_scalar(x.op(0) - y.op(0)) && is_zero_scalar(x.op(1) - y.op(1));
+                if (x.info(f) != y.info(f)) return known(false);
+            return all_of({decide(x.op(0) - y.op(0)), decide(x.op(1) - y.op(1))});
         }
-        return is_zero_scalar(x - y);
+        return decide(x - y);
     }
     if (a.is_element() && b.is_element()) {
-        if (a.as_element().parent().name() != b.as_element().parent().name()) return false;
-        return a.as_element() == b.as_element();
+        const element& u = a.as_element();
+        const element& v = b.as_element();
+        if (u.parent().name() != v.parent().name()) return known(false);
+        std::vector<equality> parts;
+        for (std::size_t k = 0; k < u.dim(); ++k) parts.push_back(decide(u[k] - v[k]));
+        return all_of(parts);
     }
-    if (a.is_element() && b.is_ex())  // never one holding a matrix (an element of matrices cannot be formed)
-        return !has_matrix(b.as_ex()) &&
-               a.as_element() == element::scalar(a.as_element().parent_ptr(), b.as_ex());
-    if (a.is_ex() && b.is_element()) return values_equal(b, a);
+    if (a.is_element() && b.is_ex()) {  // never one holding a matrix (an element of matrices cannot be formed)
+        if (has_matrix(b.as_ex())) return known(false);
+        return compare_values(a, value(element::scalar(a.as_element().parent_ptr(), b.as_ex())));
+    }
+    if (a.is_ex() && b.is_element()) return compare_values(b, a);
     if (a.is_list() && b.is_list()) {
         const list& x = a.as_list();
         const list& y = b.as_list();
-        if (x.size() != y.size()) return false;
-        for (std::size_t i = 0; i < x.size(); ++i)
-            if (!values_equal(x[i], y[i])) return false;
-        return true;
+        if (x.size() != y.size()) return known(false);
+        std::vector<equality> parts;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            parts.push_back(compare_values(x[i], y[i]));
+            if (parts.back().result == truth::no) return parts.back();
+        }
+        return all_of(parts);
     }
-    if (a.is_bool() && b.is_bool()) return a.as_bool() == b.as_bool();
-    if (a.is_string() && b.is_string()) return a.as_string() == b.as_string();
-    if (a.is_algebra() && b.is_algebra()) return a.as_algebra()->name() == b.as_algebra()->name();
-    if (a.is_none() && b.is_none()) return true;
-    return false;
+    if (a.is_bool() && b.is_bool()) return known(a.as_bool() == b.as_bool());
+    if (a.is_string() && b.is_string()) return known(a.as_string() == b.as_string());
+    if (a.is_algebra() && b.is_algebra()) return known(a.as_algebra()->name() == b.as_algebra()->name());
+    if (a.is_none() && b.is_none()) return known(true);
+    return known(false);
+}
+
+bool values_equal(const value& a, const value& b) {
+    const equality e = compare_values(a, b);
+    if (e.result == truth::unknown)
+        throw domain_error("cannot decide whether the two sides are equal: their difference " +
+                           shortened(e.undecided) +
+                           " is not proved 0, and no point was found where it is not 0 (see docs/language.md, "
+                           "\"Equality\")");
+    return e.result == truth::yes;
 }
 
 

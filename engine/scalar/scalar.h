@@ -111,6 +111,12 @@ GiNaC::ex normalize_trig_signs(const GiNaC::ex& e);
 /// expanded, so that they stay sums of exponentials and trigonometric terms instead
 /// of becoming one fraction over exp(...). Identity for doubles.
 GiNaC::ex tidy(const GiNaC::ex& x);
+
+/// simplify(e) of the language: at least what the zero test decides (radicals and
+/// logarithms of rationals over primes, trigonometric and hyperbolic identities
+/// through the exponential form when it normalizes to a form without them,
+/// arctangents inside sin/cos as algebraic functions), else normal(expand(e)).
+GiNaC::ex simplify_scalar(const GiNaC::ex& x);
 inline double tidy(double x) { return x; }
 
 /// An expression as text for an error message, cut to about `max` characters

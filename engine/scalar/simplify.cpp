@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -128,6 +129,37 @@ GiNaC::ex exp_scalar(const GiNaC::ex& x) {
     else
         term(e);
     return pre * GiNaC::exp(rest);
+}
+
+namespace {
+
+void collect_symbols(const GiNaC::ex& x, std::set<GiNaC::ex, GiNaC::ex_is_less>& out) {
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) out.insert(*it);
+}
+
+}  // namespace
+
+// At least what the zero test decides: radicals and logarithms of rationals over
+// primes (sqrt(2) sqrt(8) = 4), arctangents inside sin/cos/tan as algebraic
+// functions, and trigonometric and hyperbolic polynomials through their
+// exponential form when that form normalizes to an expression without the
+// formal exponentials (cos(p)^2 + sin(p)^2 = 1).
+GiNaC::ex simplify_scalar(const GiNaC::ex& x) {
+    guard_expansion(x, "simplify", false);
+    const GiNaC::ex y = expand_rational_logs(trig_of_arctangents(GiNaC::expand(x)));
+    guard_expansion(y, "simplify", true);
+    const GiNaC::ex plain = GiNaC::normal(GiNaC::expand(y));
+    if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y))
+        return plain;
+    const GiNaC::ex z = GiNaC::normal(expand_rational_logs(trig_exponential_form(y)));
+    std::set<GiNaC::ex, GiNaC::ex_is_less> before, after;
+    collect_symbols(y, before);
+    collect_symbols(z, after);
+    for (const GiNaC::ex& s : after)
+        if (!before.count(s)) return plain;  // the formal exponentials remain: keep the trigonometric form
+    if (z.has(GiNaC::I) && !y.has(GiNaC::I)) return plain;
+    return z;
 }
 
 }  // namespace symrep

@@ -110,6 +110,31 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                     c = term.op(term.nops() - 1);
                     term = term / c;
                 }
+                if (term.is_equal(GiNaC::Pi) && k.is_equal(GiNaC::I)) {
+                    // e^(i c pi) is an algebraic number: exact where GiNaC knows cos and sin of c pi
+                    // (c with denominator 1, 2, 3, 4, 6, ...), so that sin(pi - x) meets sin(x)
+                    const GiNaC::ex z = GiNaC::cos(c * GiNaC::Pi) + GiNaC::I * GiNaC::sin(c * GiNaC::Pi);
+                    if (!z.has(GiNaC::cos(GiNaC::wild())) && !z.has(GiNaC::sin(GiNaC::wild()))) {
+                        E *= z;
+                        continue;
+                    }
+                }
+                if (k.is_equal(GiNaC::I) && GiNaC::is_a<GiNaC::numeric>(c) &&
+                    GiNaC::ex_to<GiNaC::numeric>(c).is_integer()) {
+                    // e^(i atan z) = (1 + i z)/sqrt(1 + z^2) and e^(i atan2(y, x)) = (x + i y)/sqrt(x^2 + y^2)
+                    // for real z, x, y: cos(pi - atan(2)) meets -1/sqrt(5)
+                    if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(term) && term.op(0).info(GiNaC::info_flags::real)) {
+                        const GiNaC::ex z = term.op(0);
+                        E *= GiNaC::pow((1 + GiNaC::I * z) / GiNaC::sqrt(GiNaC::expand(1 + z * z)), c);
+                        continue;
+                    }
+                    if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(term) && term.op(0).info(GiNaC::info_flags::real) &&
+                        term.op(1).info(GiNaC::info_flags::real)) {
+                        const GiNaC::ex y = term.op(0), x = term.op(1);
+                        E *= GiNaC::pow((x + GiNaC::I * y) / GiNaC::sqrt(GiNaC::expand(x * x + y * y)), c);
+                        continue;
+                    }
+                }
                 auto it = V.find(term);
                 if (it == V.end()) it = V.emplace(term, GiNaC::realsymbol()).first;  // a formal variable
                 E *= GiNaC::pow(it->second, c);
@@ -197,8 +222,68 @@ bool has_symbolic_square_root(const GiNaC::ex& e) {
     return false;
 }
 
+namespace {
+
+bool is_atan(const GiNaC::ex& u) { return GiNaC::is_the_function<GiNaC::atan_SERIAL>(u); }
+
+/// A sum of integer multiples of arctangents of real numbers and of a rational
+/// multiple of pi, c_pi pi + sum c_j atan(z_j) (no symbols), is 0 exactly when
+///   e^(i S) = e^(i c_pi pi) prod ((1 + i z_j)/sqrt(1 + z_j^2))^(c_j) = 1   (an algebraic identity)
+/// and |S| < 2 pi (then S, a multiple of 2 pi, is 0). The first is decided by
+/// the zero test on algebraic numbers, the second by a 30-digit evaluation
+/// that only has to separate 0 from 2 pi. Answers true, or false when it does
+/// not apply or does not prove it (never a claim that S is not 0).
+bool has_symbol(const GiNaC::ex& x) {
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
+    return false;
+}
+
+bool is_integer_number(const GiNaC::ex& c) {
+    return GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_integer();
+}
+
+/// A real number given without symbols (1/5, sqrt(2)/3, ...).
+bool is_real_constant(const GiNaC::ex& z) {
+    if (has_symbol(z)) return false;
+    const GiNaC::ex v = GiNaC::evalf(z);
+    return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+}
+
+bool is_zero_arctangent_sum(const GiNaC::ex& x) {
+    const GiNaC::ex y = GiNaC::expand(x);
+    GiNaC::ex E = 1;
+    bool any = false;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(y) ? y.nops() : 1); ++i) {
+        GiNaC::ex term = GiNaC::is_a<GiNaC::add>(y) ? y.op(i) : y, c = 1;
+        if (GiNaC::is_a<GiNaC::mul>(term) && GiNaC::is_a<GiNaC::numeric>(term.op(term.nops() - 1))) {
+            c = term.op(term.nops() - 1);
+            term = term / c;
+        }
+        if (!GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) return false;
+        if (term.is_equal(GiNaC::Pi)) {
+            const GiNaC::ex z = GiNaC::cos(c * GiNaC::Pi) + GiNaC::I * GiNaC::sin(c * GiNaC::Pi);
+            if (z.has(GiNaC::cos(GiNaC::wild())) || z.has(GiNaC::sin(GiNaC::wild()))) return false;
+            E *= z;
+        } else if (is_atan(term) && is_integer_number(c) && is_real_constant(term.op(0))) {
+            const GiNaC::ex z = term.op(0);
+            E *= GiNaC::pow((1 + GiNaC::I * z) / GiNaC::sqrt(1 + z * z), c);
+            any = true;
+        } else {
+            return false;
+        }
+    }
+    if (!any) return false;
+    if (!GiNaC::normal(expand_rational_logs(GiNaC::expand(E - 1))).is_zero()) return false;
+    const GiNaC::ex v = GiNaC::evalf(x);
+    return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v)) < 1;
+}
+
+}  // namespace
+
 bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
+    if (x.has(GiNaC::atan(GiNaC::wild())) && !has_symbol(x) && is_zero_arctangent_sum(x)) return true;
     guard_expansion(x, "zero test", true);
     const GiNaC::ex y = expand_rational_logs(trig_of_arctangents(x));
     // square roots of expressions first as algebraic symbols: faster than normal(),
@@ -211,7 +296,8 @@ bool is_zero_scalar(const GiNaC::ex& x) {
     if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y) &&
         !has_related_exponentials(y))
         return false;
-    const GiNaC::ex z = trig_exponential_form(y);
+    // radicals that the exponential form brings in (sqrt(34) from e^(i atan(5/3))) over primes too
+    const GiNaC::ex z = expand_rational_logs(trig_exponential_form(y));
     guard_expansion(z, "zero test", true);
     return GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z);
 }

@@ -378,7 +378,11 @@ ex triple(const ex& a, const ex& b, const ex& c) { return vtriple(a, b, c); }
 ex norm(const ex& a) {
     if (!a.is_zero() && !kind(a))
         throw type_error("norm: the argument (" + message_text(a) + ") is a scalar, expected a vector");
-    return GiNaC::sqrt(vdot(a, a));
+    const ex d = vdot(a, a);
+    // a literal's length with trigonometric components: |W [cos p, 0, sin p]| = W for positive W
+    if (vector_symbols(d).empty() && (d.has(GiNaC::sin(GiNaC::wild())) || d.has(GiNaC::cos(GiNaC::wild()))))
+        return GiNaC::sqrt(simplify_scalar(d));
+    return GiNaC::sqrt(d);
 }
 
 bool is_vector(const ex& e) { return kind(e) == 1; }

@@ -1,0 +1,135 @@
+// symrep/scalar/equality.cpp -- the three-valued zero decision (see equality.h).
+#include "scalar/equality.h"
+
+#include <cstdint>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "core/error.h"
+#include "core/interrupt.h"
+#include "scalar/scalar.h"
+
+namespace symrep {
+
+namespace {
+
+/// The symbols of x, sorted by name (a deterministic order: GiNaC's own order follows creation).
+std::vector<GiNaC::ex> symbols_by_name(const GiNaC::ex& x) {
+    std::map<std::string, GiNaC::ex> found;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) found.emplace(GiNaC::ex_to<GiNaC::symbol>(*it).get_name(), *it);
+    std::vector<GiNaC::ex> out;
+    for (auto& [n, s] : found) out.push_back(s);
+    return out;
+}
+
+/// 64-bit FNV-1a of the printed expression: the seed of the witness points, so
+/// that the same input tries the same points (output is deterministic).
+std::uint64_t seed_of(const GiNaC::ex& x) {
+    std::ostringstream os;
+    os << x;
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : os.str()) h = (h ^ c) * 1099511628211ull;
+    return h;
+}
+
+std::uint64_t next(std::uint64_t& s) {  // splitmix64
+    std::uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+/// A rational num/den (1 <= num <= 29, 2 <= den <= 10), negative half the time unless positive.
+GiNaC::numeric sample(std::uint64_t& s, bool positive) {
+    const long num = long(next(s) % 29) + 1, den = long(next(s) % 9) + 2;
+    GiNaC::numeric v(num, den);
+    if (!positive && next(s) % 2) v = -v;
+    return v;
+}
+
+/// x evaluated with `digits` decimal digits, or nothing when that is not a number.
+bool evaluate(const GiNaC::ex& x, long digits, GiNaC::numeric& out) {
+    const long saved = GiNaC::Digits;
+    GiNaC::Digits = digits;
+    try {
+        const GiNaC::ex v = GiNaC::evalf(x);
+        GiNaC::Digits = saved;
+        if (!GiNaC::is_a<GiNaC::numeric>(v)) return false;
+        out = GiNaC::ex_to<GiNaC::numeric>(v);
+        return true;
+    } catch (const std::bad_alloc&) {
+        GiNaC::Digits = saved;
+        throw;
+    } catch (const std::exception&) {
+        GiNaC::Digits = saved;
+        return false;
+    }
+}
+
+/// A nonzero value shown at two precisions: the same number to 20 digits, above 1e-25.
+bool nonzero_witness(const GiNaC::ex& x, GiNaC::numeric& value) {
+    GiNaC::numeric a, b;
+    if (!evaluate(x, 40, a) || !evaluate(x, 80, b)) return false;
+    const GiNaC::numeric size = GiNaC::abs(b);
+    if (size < GiNaC::numeric(1) / GiNaC::pow(GiNaC::numeric(10), 25)) return false;
+    if (GiNaC::abs(a - b) > size / GiNaC::pow(GiNaC::numeric(10), 20)) return false;
+    value = b;
+    return true;
+}
+
+}  // namespace
+
+zero_decision decide_zero(const GiNaC::ex& x) {
+    zero_decision d;
+    if (is_zero_scalar(x)) {
+        d.is_zero = truth::yes;
+        return d;
+    }
+    const std::vector<GiNaC::ex> syms = symbols_by_name(x);
+    std::uint64_t s = seed_of(x);
+    const int tries = syms.empty() ? 1 : 8;
+    for (int k = 0; k < tries; ++k) {
+        check_interrupt();
+        GiNaC::exmap point;
+        for (const GiNaC::ex& v : syms) point[v] = sample(s, v.info(GiNaC::info_flags::positive));
+        GiNaC::ex at;
+        try {
+            at = syms.empty() ? x : subs_checked(x, point);
+        } catch (const symrep::error&) {
+            continue;  // a pole at this point
+        } catch (const std::bad_alloc&) {
+            throw;
+        } catch (const std::exception&) {
+            continue;
+        }
+        GiNaC::numeric value;
+        if (nonzero_witness(at, value)) {
+            d.is_zero = truth::no;
+            d.point = point;
+            d.value = value;
+            return d;
+        }
+    }
+    return d;
+}
+
+std::string witness_text(const zero_decision& d) {
+    if (d.point.empty()) return "";
+    std::map<std::string, std::string> byname;
+    for (const auto& [k, v] : d.point) {
+        std::ostringstream os;
+        os << v;
+        byname[GiNaC::ex_to<GiNaC::symbol>(k).get_name()] = os.str();
+    }
+    std::string out = "at ";
+    bool first = true;
+    for (const auto& [n, v] : byname) {
+        out += (first ? "" : ", ") + n + " = " + v;
+        first = false;
+    }
+    return out;
+}
+
+}  // namespace symrep

@@ -1,0 +1,39 @@
+// symrep/scalar/equality.h -- the three-valued decision "is this scalar 0?".
+//
+// The exact zero test (is_zero_scalar, scalar.h) proves identities; when it
+// does not, the difference may still be 0 (an identity it does not know) or
+// not. decide_zero() says which it can show:
+//   - yes:     proved 0 by the exact zero test;
+//   - no:      a witness: a point (values for the symbols, chosen by a fixed
+//              pseudo-random sequence seeded by the expression, respecting
+//              declared positivity) where the value, evaluated at 40 and at 80
+//              digits, is the same nonzero number to 20 digits and larger than
+//              10^-25 in size: an expression that is nonzero at a point is not
+//              identically 0;
+//   - unknown: neither. The language reports this as undecided, never as
+//              "different" (docs/language.md, "Equality").
+// An evaluation that is not numeric, or that fails (a pole, log(0)), is no
+// witness; the point is skipped.
+#pragma once
+
+#include <string>
+
+#include <ginac/ginac.h>
+
+namespace symrep {
+
+enum class truth { yes, no, unknown };
+
+struct zero_decision {
+    truth is_zero = truth::unknown;
+    GiNaC::exmap point;  ///< for `no`: the witness point (symbol -> value; empty without symbols)
+    GiNaC::ex value;     ///< for `no`: the value there (a float)
+};
+
+/// (three-valued zero test) Decides whether x is identically 0.
+zero_decision decide_zero(const GiNaC::ex& x);
+
+/// The point of a decision as text: "at x = 3/2, y = -1/3" ("" without symbols).
+std::string witness_text(const zero_decision& d);
+
+}  // namespace symrep
