@@ -117,6 +117,44 @@ public:
         }
     }
 
+    /// A text that identifies e up to the order of the operands of sums and
+    /// products, which GiNaC sets by hash values that can differ between runs:
+    /// operands are compiled in the order of these keys, so that the same
+    /// closed form gives the same program (and the same roundings) every run.
+    const std::string& key(const GiNaC::ex& e) {
+        using namespace GiNaC;
+        auto it = keys_.find(e);
+        if (it != keys_.end()) return it->second;
+        std::string k;
+        if (is_a<symbol>(e)) {
+            k = "s" + ex_to<symbol>(e).get_name();
+        } else if (is_a<add>(e) || is_a<mul>(e)) {
+            std::vector<std::string> parts;
+            for (std::size_t i = 0; i < e.nops(); ++i) parts.push_back(key(e.op(i)));
+            std::sort(parts.begin(), parts.end());
+            k = is_a<add>(e) ? "+(" : "*(";
+            for (const std::string& x : parts) k += x + ",";
+            k += ")";
+        } else if (is_a<power>(e)) {
+            k = "^(" + key(e.op(0)) + "," + key(e.op(1)) + ")";
+        } else if (is_a<function>(e)) {
+            k = "f" + ex_to<function>(e).get_name() + "(";
+            for (std::size_t i = 0; i < e.nops(); ++i) k += key(e.op(i)) + ",";
+            k += ")";
+        } else {
+            std::ostringstream os;
+            os << e;
+            k = "n" + os.str();
+        }
+        return keys_.emplace(e, std::move(k)).first->second;
+    }
+
+    /// The operands sorted by key (stable for equal keys).
+    std::vector<GiNaC::ex> in_key_order(std::vector<GiNaC::ex> v) {
+        std::stable_sort(v.begin(), v.end(), [&](const GiNaC::ex& a, const GiNaC::ex& b) { return key(a) < key(b); });
+        return v;
+    }
+
     std::uint32_t node(const GiNaC::ex& e) {
         if (share_) {
             auto it = memo_.find(e);
@@ -186,6 +224,7 @@ private:
     const std::vector<GiNaC::ex>& inputs_;
     bool share_;
     std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> input_reg_;
+    std::unordered_map<GiNaC::ex, std::string, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> keys_;
     std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
     std::unordered_map<GiNaC::ex, bool, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> constant_memo_;
     std::map<std::uint64_t, std::uint32_t> constant_reg_;  // by bit pattern
@@ -329,6 +368,7 @@ private:
             else
                 terms.push_back(e.op(i));
         }
+        terms = in_key_order(std::move(terms));
         if (!csum.is_zero()) terms.push_back(csum);
         for (const GiNaC::ex& term : terms) {
             GiNaC::ex u;
@@ -382,6 +422,7 @@ private:
                 rest.insert(rest.end(), cfactors.begin(), cfactors.end());  // compiled one by one
             }
         }
+        rest = in_key_order(std::move(rest));
         for (const ex& f : rest) {
             if (is_a<power>(f) && is_a<GiNaC::numeric>(f.op(1)) && ex_to<GiNaC::numeric>(f.op(1)).is_real() &&
                 ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {

@@ -1,6 +1,7 @@
 // symrep/scalar/simplify.cpp -- tidy, trigonometric signs, arctangents, exp and log of scalars (scalar.h).
 #include "scalar/scalar.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -64,11 +65,72 @@ bool has_negative_sign(const GiNaC::ex& a) {
     return false;
 }
 
+namespace {
+
+std::string text_of(const GiNaC::ex& e) {
+    std::ostringstream os;
+    os << e;
+    return os.str();
+}
+
+/// The text of a monomial whose factors are sorted by their own text (GiNaC's
+/// order of factors follows hash values, which differ between runs).
+std::string monomial_text(const GiNaC::ex& m) {
+    std::vector<std::string> f;
+    if (GiNaC::is_a<GiNaC::mul>(m))
+        for (std::size_t i = 0; i < m.nops(); ++i) f.push_back(text_of(m.op(i)));
+    else
+        f.push_back(text_of(m));
+    std::sort(f.begin(), f.end());
+    std::string s;
+    for (const std::string& x : f) s += (s.empty() ? "" : "*") + x;
+    return s;
+}
+
+/// The sign of u in a form that depends only on the mathematics: the sign of the
+/// coefficient of the leading monomial of expand(u) (highest total degree, then
+/// the smallest text), so that (x2 - x1) t and -(x1 - x2) t get the same answer.
+bool canonical_negative(const GiNaC::ex& u) {
+    const GiNaC::ex e = GiNaC::expand(u);
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return GiNaC::ex_to<GiNaC::numeric>(e).is_negative();
+    bool found = false, negative = false;
+    int best_degree = 0;
+    std::string best_text;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        GiNaC::numeric c = 1;
+        GiNaC::ex rest = term;
+        if (GiNaC::is_a<GiNaC::numeric>(term)) {
+            c = GiNaC::ex_to<GiNaC::numeric>(term);
+            rest = 1;
+        } else if (GiNaC::is_a<GiNaC::mul>(term)) {
+            const GiNaC::ex last = term.op(term.nops() - 1);
+            if (GiNaC::is_a<GiNaC::numeric>(last)) {
+                c = GiNaC::ex_to<GiNaC::numeric>(last);
+                rest = term / last;
+            }
+        }
+        int deg = 0;  // the number of symbol occurrences: the total degree for monomials
+        for (auto it = rest.preorder_begin(); it != rest.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it)) ++deg;
+        const std::string t = monomial_text(rest);
+        if (!found || deg > best_degree || (deg == best_degree && t < best_text)) {
+            found = true;
+            best_degree = deg;
+            best_text = t;
+            negative = c.is_negative() || (!c.is_real() && c.real().is_negative());
+        }
+    }
+    return negative;
+}
+
+}  // namespace
+
 GiNaC::ex normalize_trig_signs(const GiNaC::ex& e) {
     struct trig_sign : GiNaC::map_function {
         GiNaC::ex operator()(const GiNaC::ex& x) override {
             const GiNaC::ex y = x.map(*this);
-            if (GiNaC::is_a<GiNaC::function>(y) && y.nops() == 1 && has_negative_sign(y.op(0))) {
+            if (GiNaC::is_a<GiNaC::function>(y) && y.nops() == 1 && canonical_negative(y.op(0))) {
                 const std::string f = GiNaC::ex_to<GiNaC::function>(y).get_name();
                 if (f == "cos") return GiNaC::cos(-y.op(0));
                 if (f == "sin") return -GiNaC::sin(-y.op(0));
