@@ -295,22 +295,14 @@ equality known(bool b) {
     return e;
 }
 
-/// Vectors by components: each vector symbol v becomes [v_1, v_2, v_3] (real symbols),
-/// so that a witness is a point of the components.
+/// Vectors by components (vector/vector.h decide_zero_vector).
 equality decide_vectors(const ex& x, const ex& y) {
-    if (symrep::equal(x, y)) return known(true);
-    std::map<ex, ex, GiNaC::ex_is_less> m;
-    for (const ex& v : vector_symbols(x - y)) {
-        std::ostringstream os;
-        os << v;
-        const std::string n = os.str();
-        m[v] = vector_literal(GiNaC::realsymbol(n + "_1"), GiNaC::realsymbol(n + "_2"), GiNaC::realsymbol(n + "_3"));
-    }
-    const ex c = subs_components(x - y, m);
-    if (!is_a<GiNaC::matrix>(c)) return decide(c);
-    std::vector<equality> parts;
-    for (std::size_t i = 0; i < c.nops(); ++i) parts.push_back(decide(c.op(i)));
-    return all_of(parts);
+    const zero_decision d = decide_zero_vector(x - y);
+    equality e;
+    e.result = d.is_zero;
+    if (d.is_zero == truth::unknown) e.undecided = print_ex(x - y);
+    if (d.is_zero == truth::no) e.witness = witness_text(d);
+    return e;
 }
 
 }  // namespace

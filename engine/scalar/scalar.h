@@ -112,6 +112,10 @@ GiNaC::ex normalize_trig_signs(const GiNaC::ex& e);
 /// of becoming one fraction over exp(...). Identity for doubles.
 GiNaC::ex tidy(const GiNaC::ex& x);
 
+/// Half-integer powers of positive rationals in each product made one
+/// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221).
+GiNaC::ex canonical_radicals(const GiNaC::ex& e);
+
 /// simplify(e) of the language: at least what the zero test decides (radicals and
 /// logarithms of rationals over primes, trigonometric and hyperbolic identities
 /// through the exponential form when it normalizes to a form without them,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -141,9 +142,94 @@ GiNaC::ex normalize_trig_signs(const GiNaC::ex& e) {
     return m(e);
 }
 
+namespace {
+
+/// True when x holds a power of a rational number with a non-integer exponent (sqrt(12)).
+bool has_rational_radical(const GiNaC::ex& x) {
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(0)) &&
+            GiNaC::is_a<GiNaC::numeric>(it->op(1)) && !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer())
+            return true;
+    return false;
+}
+
+/// n = a^2 b with b free of the squares of primes below 2^16 (a larger cofactor
+/// stays in b unless it is a perfect square itself).
+void square_part(GiNaC::numeric n, GiNaC::numeric& a, GiNaC::numeric& b) {
+    a = 1;
+    b = 1;
+    for (long p = 2; p < 65536 && p * p <= n; ++p) {
+        const GiNaC::numeric pp(p);
+        int k = 0;
+        while (GiNaC::irem(n, pp).is_zero()) {
+            n = GiNaC::iquo(n, pp);
+            ++k;
+        }
+        for (int i = 0; i + 1 < k; i += 2) a *= pp;
+        if (k % 2) b *= pp;
+    }
+    const GiNaC::numeric r = GiNaC::isqrt(n);
+    if (r * r == n) a *= r;
+    else b *= n;
+}
+
+}  // namespace
+
+// sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221), sqrt(1/2) = sqrt(2)/2: the
+// half-integer powers of positive rationals in each product made one c sqrt(b),
+// b a square-free integer.
+GiNaC::ex canonical_radicals(const GiNaC::ex& e) {
+    struct radicals : GiNaC::map_function {
+        static bool half_power(const GiNaC::ex& f) {
+            if (!GiNaC::is_a<GiNaC::power>(f) || !GiNaC::is_a<GiNaC::numeric>(f.op(0)) ||
+                !GiNaC::is_a<GiNaC::numeric>(f.op(1)))
+                return false;
+            const GiNaC::numeric& b = GiNaC::ex_to<GiNaC::numeric>(f.op(0));
+            const GiNaC::numeric& k = GiNaC::ex_to<GiNaC::numeric>(f.op(1));
+            return b.is_rational() && b.is_positive() && !k.is_integer() && (2 * k).is_integer();
+        }
+        std::optional<GiNaC::ex> combine(const std::vector<GiNaC::ex>& factors) {
+            GiNaC::ex rest = 1;
+            GiNaC::numeric S = 1, outside = 1;  // the product is outside * S^(1/2) * rest
+            bool any = false;
+            for (const GiNaC::ex& f : factors) {
+                if (!half_power(f)) {
+                    rest *= f;
+                    continue;
+                }
+                any = true;
+                const GiNaC::numeric b = GiNaC::ex_to<GiNaC::numeric>(f.op(0));
+                const GiNaC::numeric k2 = 2 * GiNaC::ex_to<GiNaC::numeric>(f.op(1));  // odd
+                const GiNaC::numeric whole = (k2 - 1) / 2;                          // b^(k2/2) = b^whole sqrt(b)
+                outside *= GiNaC::pow(b, whole);
+                S *= b;
+            }
+            if (!any) return std::nullopt;
+            const GiNaC::numeric P = S.numer(), Q = S.denom();
+            GiNaC::numeric a, sq;
+            square_part(P * Q, a, sq);  // sqrt(P/Q) = sqrt(P Q)/Q = a sqrt(sq)/Q
+            return rest * outside * a / Q * GiNaC::sqrt(GiNaC::ex(sq));
+        }
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const GiNaC::ex y = x.map(*this);
+            if (GiNaC::is_a<GiNaC::mul>(y)) {
+                std::vector<GiNaC::ex> f;
+                for (std::size_t i = 0; i < y.nops(); ++i) f.push_back(y.op(i));
+                const std::optional<GiNaC::ex> c = combine(f);
+                return c ? *c : y;
+            }
+            if (half_power(y)) return *combine({y});
+            return y;
+        }
+    } m;
+    return m(e);
+}
+
 GiNaC::ex tidy(const GiNaC::ex& x) {
     guard_expansion(x, "simplification", false);
-    const GiNaC::ex e = GiNaC::expand(trig_of_arctangents(x));
+    // radicals of rationals in one form: sqrt(12) is 2 sqrt(3), so that it meets sqrt(3)
+    const GiNaC::ex r = has_rational_radical(x) ? canonical_radicals(x) : x;
+    const GiNaC::ex e = GiNaC::expand(trig_of_arctangents(r));
     if (has_function_call(e)) return GiNaC::expand(normalize_trig_signs(e));
     guard_expansion(e, "simplification", true);
     return GiNaC::normal(e);
@@ -213,15 +299,15 @@ GiNaC::ex simplify_scalar(const GiNaC::ex& x) {
     guard_expansion(y, "simplify", true);
     const GiNaC::ex plain = GiNaC::normal(GiNaC::expand(y));
     if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y))
-        return plain;
+        return canonical_radicals(plain);
     const GiNaC::ex z = GiNaC::normal(expand_rational_logs(trig_exponential_form(y)));
     std::set<GiNaC::ex, GiNaC::ex_is_less> before, after;
     collect_symbols(y, before);
     collect_symbols(z, after);
     for (const GiNaC::ex& s : after)
-        if (!before.count(s)) return plain;  // the formal exponentials remain: keep the trigonometric form
-    if (z.has(GiNaC::I) && !y.has(GiNaC::I)) return plain;
-    return z;
+        if (!before.count(s)) return canonical_radicals(plain);  // the formal exponentials remain
+    if (z.has(GiNaC::I) && !y.has(GiNaC::I)) return canonical_radicals(plain);
+    return canonical_radicals(z);
 }
 
 }  // namespace symrep

@@ -557,10 +557,21 @@ std::vector<ex> symbolic_components(const ex& d) {
     return {c};
 }
 
+// A polynomial in symbols with rational (or complex rational) coefficients, whose
+// expanded form is canonical: nonzero when it is not 0. Radicals, constants
+// such as pi and functions are excluded: sqrt(12) - 2 sqrt(3) expands to itself.
 bool is_polynomial_in_symbols(const ex& e) {
     GiNaC::lst syms;
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
         if (is_a<GiNaC::symbol>(*it)) syms.append(*it);
+        else if (is_a<GiNaC::constant>(*it) || is_a<GiNaC::function>(*it)) return false;
+        else if (is_a<GiNaC::numeric>(*it) && !ex_to<GiNaC::numeric>(*it).is_cinteger() &&
+                 !ex_to<GiNaC::numeric>(*it).is_crational())
+            return false;
+        else if (is_a<GiNaC::power>(*it) && !(is_a<GiNaC::numeric>(it->op(1)) &&
+                                               ex_to<GiNaC::numeric>(it->op(1)).is_integer()))
+            return false;
+    }
     return e.is_polynomial(syms);
 }
 
@@ -608,6 +619,29 @@ bool equal(const ex& a, const ex& b) {
         if (!is_zero_scalar(c)) return false;
     }
     return true;
+}
+
+zero_decision decide_zero_vector(const ex& d) {
+    if (equal(d, 0)) {
+        zero_decision z;
+        z.is_zero = truth::yes;
+        return z;
+    }
+    // by components, each vector symbol v as [v_1, v_2, v_3]: a witness is a point of the components
+    exmap_less m;
+    for (const ex& v : vector_symbols(d))
+        m[v] = vector_literal(GiNaC::realsymbol(name_of(v) + "_1"), GiNaC::realsymbol(name_of(v) + "_2"),
+                              GiNaC::realsymbol(name_of(v) + "_3"));
+    const ex c = subs_components(d, m);
+    if (!is_a<GiNaC::matrix>(c)) return decide_zero(c);
+    zero_decision out;
+    out.is_zero = truth::yes;
+    for (std::size_t i = 0; i < c.nops(); ++i) {
+        const zero_decision z = decide_zero(c.op(i));
+        if (z.is_zero == truth::no) return z;
+        if (z.is_zero == truth::unknown) out = z;
+    }
+    return out;
 }
 
 }  // namespace symrep

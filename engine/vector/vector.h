@@ -54,6 +54,8 @@
 #include <vector>
 #include <ginac/ginac.h>
 
+#include "scalar/equality.h"
+
 namespace symrep {
 
 // GiNaC functions behind cross/dot/triple; use the wrappers below, which check
@@ -139,6 +141,10 @@ std::vector<vector_term> canonical_terms(const GiNaC::ex& e);
 /// Exact equality of two vector (or two scalar) expressions by the component
 /// test. Comparing a vector with a scalar other than 0 throws type_error.
 bool equal(const GiNaC::ex& a, const GiNaC::ex& b);
+/// Three-valued: is the vector (or scalar) d identically 0? yes (proved, as
+/// equal), no (a witness point of the components v_1, v_2, v_3 of each vector
+/// symbol v, scalar/equality.h), or unknown.
+zero_decision decide_zero_vector(const GiNaC::ex& d);
 
 /// How to_string writes the cross and the scalar product: `a x b`, `a . b`
 /// (ascii) or `a × b`, `a · b` (unicode: U+00D7 and U+00B7, UTF-8 encoded;
