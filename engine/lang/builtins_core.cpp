@@ -10,6 +10,7 @@
 
 #include "scalar/scalar.h"
 #include "lang/builtins.h"
+#include "numeric/reference.h"
 #include "lang/interpreter.h"
 #include "output/printer.h"
 #include "lang/print_value.h"
@@ -335,20 +336,25 @@ void register_core_builtins(registry& r) {
         });
     add(r, "evalf", "evalf(e [, digits])",
         "Numeric value of e (of each coordinate of an element, of each entry of a list) with the given number of "
-        "decimal digits (default: GiNaC's 17).",
+        "significant decimal digits (default: the current `digits`, GiNaC's 17). The arguments of functions are "
+        "reduced exactly: the precision is raised by the size of each argument (cos(2*10^300) is computed with "
+        "the 300 more digits of its argument and of pi that its reduction modulo 2 pi needs), and floats are "
+        "taken as the exact binary numbers they denote. With digits D, every number is printed with D "
+        "significant digits.",
         "", "evalf(pi, 30)", 1, 2, [](const builtin& b, const args_t& a, context&) {
-            if (a.size() == 1) return map_value(a[0], b, [](const ex& x) { return x.evalf(); });
-            const long digits = arg_int(a, 1, b, 1, 100000);
-            const long saved = GiNaC::Digits;
-            GiNaC::Digits = digits;
-            try {
-                value v = map_value(a[0], b, [](const ex& x) { return x.evalf(); });
-                GiNaC::Digits = saved;
-                return v;
-            } catch (...) {
-                GiNaC::Digits = saved;
-                throw;
+            if (a.size() == 1) {
+                const long digits = GiNaC::Digits;
+                return map_value(a[0], b, [digits](const ex& x) {
+                    const ex v = num::evalf_reduced(x, digits);
+                    // only where the precision had to be raised: the usual floats otherwise
+                    return num::reduction_digits(num::exact_floats_of(x)) > 0 ? num::round_digits(v, digits)
+                                                                             : x.evalf();
+                });
             }
+            const long digits = arg_int(a, 1, b, 1, 100000);
+            return map_value(a[0], b, [digits](const ex& x) {
+                return num::round_digits(num::evalf_reduced(x, digits), digits);
+            });
         });
 
     add_elementary(r, "sqrt", "square root", "sqrt(8)", [](const ex& x) { return GiNaC::sqrt(x); });

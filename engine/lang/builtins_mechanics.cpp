@@ -187,11 +187,20 @@ void register_mechanics_builtins(registry& r) {
         "values put in: the check of a scene's solution solve(P, values).",
         "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
             const auto& P0 = problem_arg(a, 0, b);
-            const mechanics::cauchy_problem P =
-                a.size() == 3 ? mechanics::with_values(P0, scene_values(a, 2, b)) : P0;
-            const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
+            const mechanics::parameter_values vals =
+                a.size() == 3 ? scene_values(a, 2, b) : mechanics::parameter_values{};
+            const mechanics::cauchy_problem P = a.size() == 3 ? mechanics::with_values(P0, vals) : P0;
+            // the values go into s too (a general solution checked for the scene's values)
+            const ex s0 = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
+            const ex s = a.size() == 3 ? mechanics::put_values(s0, vals) : s0;
             const mechanics::solution_check k = mechanics::check(P, s);
-            if (!k.residual_zero) c.out() << "check: the residual is " << print_ex(k.residual) << ", not 0\n";
+            // a vector as the language writes it: one literal [x, y, z] when no vector symbol is left
+            auto shown = [&](const ex& x) {
+                if (P.is_vector && is_vector(x) && vector_symbols(x).empty())
+                    return print_ex(subs_components(x, {}));
+                return print_ex(x);
+            };
+            if (!k.residual_zero) c.out() << "check: the residual is " << shown(k.residual) << ", not 0\n";
             if (k && k.rounding > 0) {
                 std::ostringstream ratio;  // not on c.out(): its precision stays as it is
                 ratio << std::setprecision(2) << k.rounding;
@@ -201,7 +210,7 @@ void register_mechanics_builtins(registry& r) {
             for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
                 if (!k.initial_differences[m].is_zero())
                     c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "
-                            << print_ex(k.initial_differences[m]) << "\n";
+                            << shown(k.initial_differences[m]) << "\n";
             return value(bool(k));
         });
     add(r, "model", "model(P, values)",
@@ -218,7 +227,7 @@ void register_mechanics_builtins(registry& r) {
     add(r, "eval", "eval(e, values, t = T)",
         "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
         "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
-        "number or a list of numbers. Returns a number or a list of components (a list of those for "
+        "number or a list of numbers (a time written as a decimal, 1e300, is that decimal number exactly). Returns a number or a list of components (a list of those for "
         "several times). Where the values make the closed form singular (w = 0 in sin(|w| t)/|w|), "
         "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
         "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
@@ -238,12 +247,26 @@ void register_mechanics_builtins(registry& r) {
                 tsym = tr.lhs();
                 const ex T = tr.rhs();
                 if (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T))  // t = [T1, T2, ...]
-                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::exact_floats_of(T.op(i)));
+                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::decimal_floats_of(T.op(i)));
                 else
-                    times.push_back(num::exact_floats_of(T));
+                    times.push_back(num::decimal_floats_of(T));  // t = 1e300 is 10^300 (a long phase shows the difference)
             }
             if (a.size() == 3 && a[2].is_ex() && times.empty())
                 throw type_error(b.name + ": no time given");
+            // the symbols of e other than t are constants: a value that depends on t would
+            // evaluate a frozen solution of a different problem without a word (refused)
+            if (!times.empty())
+                for (const auto& [k, x] : d.scalars)
+                        if (x.has(tsym))
+                            throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
+                                               print_ex(tsym) + ": the values are constants (the expression is "
+                                               "evaluated at " + print_ex(tsym) + " = T)");
+            if (!times.empty())
+                for (const auto& [k, x] : d.vectors)
+                    if (x.has(tsym))
+                        throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
+                                           print_ex(tsym) + ": the values are constants (the expression is "
+                                           "evaluated at " + print_ex(tsym) + " = T)");
             try {
                 if (times.empty()) return numbers(put_values_limit(e, d), b);
                 list out;

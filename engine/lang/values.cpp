@@ -2,6 +2,8 @@
 // builtins_mechanics.cpp, shared by eval, verify, plot, trajectory and hodograph.
 #include "lang/values.h"
 
+#include <set>
+
 #include "numeric/reference.h"
 
 #include "scalar/scalar.h"
@@ -29,8 +31,13 @@ data_values read_values(const value& v, const builtin& b, std::size_t argno) {
     if (v.is_list()) for (const value& x : v.as_list()) take(x);
     else take(v);
     data_values d;
+    std::set<std::string> seen;
     for (const ex& r : rels) {
         const ex lhs = r.lhs();
+        // a name given twice is a mistake (the last one would win silently)
+        if ((is_vector_symbol(lhs) || GiNaC::is_a<GiNaC::symbol>(lhs)) && !seen.insert(print_ex(lhs)).second)
+            throw type_error(b.name + ": " + print_ex(lhs) + " is given a value twice in argument " +
+                             std::to_string(argno + 1));
         if (is_vector_symbol(lhs)) {
             if (!is_vector_literal(r.rhs()) && !r.rhs().is_zero())
                 throw type_error(b.name + ": the value of the vector " + print_ex(lhs) +
@@ -58,6 +65,18 @@ data_values read_values(const value& v, const builtin& b, std::size_t argno) {
         }
         if (!changed) break;
     }
+    // a value that still uses a name with a value refers to itself through the others
+    // (a = 2*b, b = a): refused by name, not answered with whatever the passes left
+    for (const auto& [k, x] : d.scalars)
+        for (const auto& [k2, x2] : d.scalars)
+            if (x.has(k2))
+                throw type_error(b.name + ": the values are cyclic: the value of " + print_ex(k) + " still uses " +
+                                 print_ex(k2) + " (a value cannot refer to itself, directly or through other values)");
+    for (const auto& [k, x] : d.vectors)
+        for (const auto& [k2, x2] : d.scalars)
+            if (x.has(k2))
+                throw type_error(b.name + ": the values are cyclic: the value of " + print_ex(k) + " still uses " +
+                                 print_ex(k2) + " (a value cannot refer to itself, directly or through other values)");
     return d;
 }
 

@@ -471,7 +471,11 @@ solution_check check(const cauchy_problem& P, const ex& s) {
         ex diff = at0 - P.initial[m];
         bool zero = P.is_vector ? equal(diff, 0) : is_zero_scalar(diff);
         if (!zero && floats) {
-            const double q = rounding_ratio(diff, {at0, P.initial[m]}, P.t, P.is_vector);
+            // the scale of the rounding: the initial value and s^(m)(0); a zero initial value (v0 = 0)
+            // has no size of its own: then the terms of s^(m), which cancel to it at t = 0
+            const bool zero_value = P.is_vector ? equal(P.initial[m], 0) : is_zero_scalar(P.initial[m]);
+            const double q = zero_value ? rounding_ratio(diff, {at0, d[m]}, P.t, P.is_vector)
+                                        : rounding_ratio(diff, {at0, P.initial[m]}, P.t, P.is_vector);
             if (q >= 0) {
                 zero = true;
                 out.rounding = std::max(out.rounding, q);

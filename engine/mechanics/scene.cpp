@@ -2,6 +2,7 @@
 #include "mechanics/scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 #include "scalar/scalar.h"
@@ -109,8 +110,19 @@ void check_value_names(const cauchy_problem& P, const parameter_values& v) {
             if (k.is_equal(P.unknowns[m]) || name == P.unknown_name(m))
                 throw domain_error(P.unknown_name(m) + " is the unknown of the problem: it cannot be given a value");
     };
-    for (const auto& kv : v.vectors) refuse(kv.first);
-    for (const auto& kv : v.scalars) refuse(kv.first);
+    // the parameters of P are constants: a value that depends on t would give the solution of a
+    // different (time-dependent) problem, frozen at each t, without a word (refused)
+    auto constant = [&](const ex& k, const ex& x) {
+        bool depends = x.has(P.t);
+        for (auto it = x.preorder_begin(); !depends && it != x.preorder_end(); ++it)
+            depends = GiNaC::is_a<GiNaC::symbol>(*it) && to_string(*it) == to_string(P.t);
+        if (depends)
+            throw domain_error("the value of " + to_string(k) + " depends on " + to_string(P.t) + ", but " +
+                               to_string(k) + " is a constant of the problem (its solution holds only for values "
+                               "that do not depend on " + to_string(P.t) + ")");
+    };
+    for (const auto& kv : v.vectors) { refuse(kv.first); constant(kv.first, kv.second); }
+    for (const auto& kv : v.scalars) { refuse(kv.first); constant(kv.first, kv.second); }
 }
 
 }  // namespace
@@ -343,6 +355,41 @@ std::string scene_model::report() const {
     return s;
 }
 
+namespace {
+
+// x (exact) evaluated in floating point with Digits plus the decimal exponent of its largest
+// coefficient (outside function arguments): terms of that size cancel to the size of the data
+// (1/|w|^3 (|w| t - sin(|w| t)) for small |w|), so that many more digits keep Digits in the result.
+ex evaluate_with_guard(const ex& x) {
+    const long saved = GiNaC::Digits;
+    struct restore {
+        long d;
+        ~restore() { GiNaC::Digits = d; }
+    } r{saved};
+    long extra = 0;
+    GiNaC::Digits = 30;
+    const ex rough = GiNaC::evalf(x);
+    struct largest : GiNaC::map_function {
+        long e = 0;
+        ex operator()(const ex& y) override {
+            if (GiNaC::is_a<GiNaC::function>(y)) return y;
+            if (GiNaC::is_a<GiNaC::numeric>(y)) {
+                const GiNaC::numeric a = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(y));
+                if (a > 1) e = std::max(e, long(std::ceil(std::log10(std::max(1.0, a.to_double())))));
+                return y;
+            }
+            return y.map(*this);
+        }
+    } f;
+    f(rough);
+    extra = std::min(f.e, 1000L);
+    const long digits = saved + extra + (extra > 0 ? 2 : 0);
+    GiNaC::Digits = digits + 10;
+    return num::round_digits(GiNaC::evalf(x), digits);
+}
+
+}  // namespace
+
 scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
     scene_solution out;
     out.model = classify(P, v);
@@ -351,6 +398,22 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
     out.model_solution = vector_solution(P, out.model.form, S);
     try {
         out.x = put_values(out.model_solution, v);
+        bool floats = false;
+        for (const auto& [k, x] : v.vectors) floats = floats || has_float(x);
+        for (const auto& [k, x] : v.scalars) floats = floats || has_float(x);
+        if (floats) {
+            // the floats as exact numbers, put into the exact solution, and
+            // the result evaluated at the end with the digits its cancellations need: rounding each
+            // coefficient to Digits before the terms of size 1/|w|^3 cancel would lose the digits
+            // the general path's eval keeps, and floats inside the derivation made the printed
+            // solution depend on the order GiNaC happened to sum them in
+            // (the decimal each float prints as: 0.1 is 1/10, so that 5 sin(t/5) prints as 5.0*sin(0.2*t);
+            // it differs from the binary number by less than the float's own rounding)
+            parameter_values exact = v;
+            for (auto& [k, x] : exact.vectors) x = num::decimal_floats_of(x);
+            for (auto& [k, x] : exact.scalars) x = num::decimal_floats_of(x);
+            out.x = evaluate_with_guard(put_values(num::decimal_floats_of(out.model_solution), exact));
+        }
     } catch (const domain_error&) {
         if (out.model.deferred_values.empty()) throw;
         // the floats meet where the derivation, without them, could not see it (w0 = 2.0 next to

@@ -75,13 +75,144 @@ long double to_long_double(const cln::cl_R& r) {
 
 }  // namespace
 
+namespace {
+
+GiNaC::numeric decimal_of(const cln::cl_R& r) {
+    if (GiNaC::numeric(cln::cl_N(r)).is_rational()) return GiNaC::numeric(cln::cl_N(r));
+    std::ostringstream os;
+    os << GiNaC::numeric(cln::cl_N(r));
+    const std::string text = os.str();  // -1.25e-7, 3.0, 1.0E300
+    cln::cl_I mantissa = 0;
+    long exponent = 0, i = 0;
+    bool negative = false, point = false;
+    if (i < long(text.size()) && (text[i] == '-' || text[i] == '+')) negative = text[i++] == '-';
+    for (; i < long(text.size()); ++i) {
+        const char c = text[i];
+        if (c >= '0' && c <= '9') {
+            mantissa = mantissa * 10 + (c - '0');
+            if (point) --exponent;
+        } else if (c == '.') {
+            point = true;
+        } else if (c == 'e' || c == 'E') {
+            exponent += std::stol(text.substr(i + 1));
+            break;
+        } else {
+            return GiNaC::numeric(cln::cl_N(cln::rational(r)));  // not a plain decimal: its exact value
+        }
+    }
+    const cln::cl_RA m = negative ? cln::cl_RA(-mantissa) : cln::cl_RA(mantissa);
+    const cln::cl_RA v = exponent >= 0 ? m * cln::expt_pos(cln::cl_I(10), exponent)
+                                       : m / cln::expt_pos(cln::cl_I(10), -exponent);
+    return GiNaC::numeric(cln::cl_N(v));
+}
+
+struct decimal_floats : GiNaC::map_function {
+    GiNaC::ex operator()(const GiNaC::ex& e) override {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (n.is_rational()) return e;
+            const cln::cl_N z = n.to_cl_N();
+            return decimal_of(cln::realpart(z)) + GiNaC::I * decimal_of(cln::imagpart(z));
+        }
+        return e.map(*this);
+    }
+};
+
+}  // namespace
+
+GiNaC::ex decimal_floats_of(const GiNaC::ex& e) {
+    decimal_floats f;
+    return f(e);
+}
+
 GiNaC::ex exact_floats_of(const GiNaC::ex& e) {
     exact_floats f;
     return f(e);
 }
 
+long reduction_digits(const GiNaC::ex& e) {
+    long extra = 0;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::function>(*it)) continue;
+        for (std::size_t i = 0; i < it->nops(); ++i) {
+            const GiNaC::ex a = it->op(i);
+            if (!GiNaC::is_a<GiNaC::numeric>(a) && !a.info(GiNaC::info_flags::numeric)) {
+                bool symbol_free = true;
+                for (auto j = a.preorder_begin(); j != a.preorder_end() && symbol_free; ++j)
+                    symbol_free = !GiNaC::is_a<GiNaC::symbol>(*j);
+                if (!symbol_free) continue;
+            }
+            // the magnitude only: 30 digits give it (nested functions are bounded or their
+            // own arguments are counted)
+            GiNaC::ex v;
+            {
+                const digits_scope scope(30 + extra);
+                v = exact_floats_of(a).evalf();
+            }
+            if (!GiNaC::is_a<GiNaC::numeric>(v)) continue;
+            const GiNaC::numeric x = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v));
+            if (x.is_zero() || x < 1) continue;
+            // log10 from the binary exponent (exact enough, no overflow for 1e100000)
+            const cln::cl_R r = cln::the<cln::cl_R>(x.to_cl_N());
+            const long bits = cln::integer_length(cln::floor1(r));
+            extra = std::max(extra, long(std::ceil(double(bits) * 0.30103)) + 1);
+        }
+    }
+    return extra;
+}
+
+GiNaC::ex evalf_reduced(const GiNaC::ex& e, long digits) {
+    const GiNaC::ex x = exact_floats_of(e);
+    const digits_scope scope(digits + reduction_digits(x) + 10);
+    return x.evalf();
+}
+
+namespace {
+
+struct rounder : GiNaC::map_function {
+    long digits;
+    GiNaC::numeric round(const GiNaC::numeric& n) const {
+        const cln::cl_R r = cln::the<cln::cl_R>(n.to_cl_N());
+        if (cln::zerop(r) || n.is_rational()) return n;
+        // m * 10^k with digits decimal digits in m, then read back with that many digits
+        const cln::cl_RA q = cln::rational(r);
+        const cln::cl_RA a = cln::abs(q);
+        long k = long(std::floor(double(cln::integer_length(cln::floor1(a))) * 0.30103)) - digits;
+        auto scaled = [&](long kk) {
+            return kk >= 0 ? a / cln::expt_pos(cln::cl_I(10), kk) : a * cln::expt_pos(cln::cl_I(10), -kk);
+        };
+        cln::cl_I m = cln::round1(scaled(k));
+        const cln::cl_I limit = cln::expt_pos(cln::cl_I(10), digits);
+        while (m >= limit) m = cln::round1(scaled(++k));
+        while (m > 0 && m * 10 < limit) m = cln::round1(scaled(--k));
+        std::ostringstream os;
+        if (cln::minusp(q)) os << "-";
+        os << GiNaC::numeric(m) << "e" << k;
+        const digits_scope scope(digits);
+        return GiNaC::numeric(os.str().c_str());
+    }
+    GiNaC::ex operator()(const GiNaC::ex& e) override {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (n.is_rational()) return e;
+            if (n.is_real()) return round(n);
+            return round(n.real()) + GiNaC::I * round(n.imag());
+        }
+        return e.map(*this);
+    }
+};
+
+}  // namespace
+
+GiNaC::ex round_digits(const GiNaC::ex& e, long digits) {
+    rounder f;
+    f.digits = digits;
+    return f(e);
+}
+
 GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
-    const digits_scope scope(digits);
+    // the arguments of periodic functions reduced exactly (cos(2*10^300) needs 300 more digits)
+    const digits_scope scope(digits + reduction_digits(e));
     const GiNaC::ex v = exact_floats_of(e).evalf();
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
         throw domain_error("reference: not a real number: " + bounded(v));

@@ -27,6 +27,30 @@ GiNaC::numeric exact_rational(double x);
 /// would otherwise compute with no more digits than it has).
 GiNaC::ex exact_floats_of(const GiNaC::ex& e);
 
+/// The decimal digits that the arguments of the functions in e need beyond the
+/// wanted ones: max over the symbol-free arguments a of functions (sin, cos, exp
+/// ...) of log10|a| (0 when all are below 1). cos(2*10^300) needs 301 more
+/// digits of its argument (and of pi) for its reduction modulo 2 pi to be exact
+/// to the wanted digits: with 17 digits its value is noise. Floats in e are
+/// taken as the exact binary numbers they denote.
+long reduction_digits(const GiNaC::ex& e);
+
+/// e evaluated (GiNaC evalf) with `digits` significant digits in every argument
+/// reduction: Digits is raised by reduction_digits(e) plus a guard for the
+/// evaluation, floats in e are taken as exact. The numbers in the result carry
+/// the raised precision (round them for printing with round_digits).
+GiNaC::ex evalf_reduced(const GiNaC::ex& e, long digits);
+
+/// Every floating-point number in e rounded to `digits` significant decimal
+/// digits (printed with at most that many).
+GiNaC::ex round_digits(const GiNaC::ex& e, long digits);
+
+/// e with every floating-point number in it replaced by the decimal rational it
+/// prints as (its shortest decimal, the number a script wrote: 1e300 -> 10^300).
+/// For times, where a long phase makes the difference between the decimal a user
+/// wrote and its binary rounding visible (sin(1e300)).
+GiNaC::ex decimal_floats_of(const GiNaC::ex& e);
+
 /// The real value of a symbol-free expression with `digits` decimal digits
 /// (CLN; floats in e taken as exact); domain_error when it is not a real number.
 GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits);
