@@ -12,6 +12,8 @@
 #include <fstream>
 #include <string>
 
+#include "numeric/reference.h"
+#include "numeric/stable_evaluator.h"
 #include "test_support.h"
 
 using symrep::test::test_session;
@@ -192,3 +194,17 @@ TEST(SceneValues, SceneScriptsAreDeterministicAcrossProcesses) {
     std::filesystem::remove_all(dir);
 }
 #endif
+
+// The stable evaluator at huge arguments: its third tier (CLN at the exact binary
+// inputs) raises the digits by the size of the phase, so sin(2 t) at t = 1e300
+// (the double) is right. Reference: mpmath at 400 digits, t = the double 1e300.
+TEST(SceneValues, StableEvaluatorReducesHugePhasesExactly) {
+    const GiNaC::symbol t("t");
+    const symrep::num::stable_function f(GiNaC::lst{GiNaC::sin(2 * t), GiNaC::cos(2 * t) / 2}, {t});
+    const std::vector<double> y = f({1e300});
+    ASSERT_EQ(y.size(), 2u);
+    EXPECT_NEAR(y[0], 2 * 0.47059789345277847414, 1e-14);
+    EXPECT_NEAR(y[1], (1 - 2 * (1.6689308221663748340 - 1)) / 2, 1e-14);
+    EXPECT_NEAR(symrep::num::accurate_double(GiNaC::sin(GiNaC::ex(2 * symrep::num::exact_rational(1e300)))),
+                2 * 0.47059789345277847414, 1e-14);
+}
