@@ -375,7 +375,10 @@ ex evaluate_with_guard(const ex& x) {
             if (GiNaC::is_a<GiNaC::function>(y)) return y;
             if (GiNaC::is_a<GiNaC::numeric>(y)) {
                 const GiNaC::numeric a = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(y));
-                if (a > 1) e = std::max(e, long(std::ceil(std::log10(std::max(1.0, a.to_double())))));
+                if (a > 1) {
+                    const double d = a > GiNaC::numeric("1e300") ? 1e300 : a.to_double();  // no overflow to inf
+                    e = std::max(e, long(std::ceil(std::log10(std::max(1.0, d)))));
+                }
                 return y;
             }
             return y.map(*this);
