@@ -107,6 +107,10 @@ TEST(SceneValues, HugeArgumentsAreReducedExactly) {
     EXPECT_NEAR(number(t, "evalf(cos(2*10^300))"), -0.94340780140772802032, 1e-15);
     EXPECT_NEAR(number(t, "evalf(cos(10^30))"), -0.99593119440539570239, 1e-15);
     EXPECT_NEAR(number(t, "evalf(sin(10^100))"), -0.37237612366127668826, 1e-15);
+    // a float literal: the decimal it writes (1e300 = 10^300), reduced exactly (it gave 1.0)
+    EXPECT_NEAR(number(t, "evalf(cos(1e300))"), -0.16821444437424507285, 1e-15);
+    EXPECT_NEAR(number(t, "sin(2.0e30)"), 0.17950046751493908795, 1e-15);
+    EXPECT_NEAR(number(t, "sin(0.5)"), std::sin(0.5), 1e-16);
     // eval at t = 1e300 (the decimal 10^300): r = r0 + ((1 - cos 2t)/2, sin(2t)/2, 0)
     ASSERT_EQ(t.run("vector w, r0, v0\ns := solve(ode(r'' + 2*w x r' = 0, r(0) = r0, r'(0) = v0))\n"
                     "x := eval(s, [w = [0, 0, 1], r0 = [1, 0, 0], v0 = [0, 1, 0]], t = 1e300)\n"

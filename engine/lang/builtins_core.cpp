@@ -140,8 +140,16 @@ void add_elementary(registry& r, const char* name, const char* what, const std::
         example, 1, 1, [f](const builtin& b, const args_t& a, context&) {
             if (a[0].is_element())
                 throw type_error(b.name + ": not defined on algebra elements (exp and log are)");
+            const std::string nm = b.name;
             return map_value(a[0], b, [&](const ex& x) {
                 no_matrix(b, x);
+                // sin(1e300): GiNaC would evaluate at once with the float's ~20 digits, noise once
+                // |x| outgrows them; the decimal the float writes, reduced exactly (issue 13)
+                if ((nm == "sin" || nm == "cos" || nm == "tan") && GiNaC::is_a<numeric>(x) &&
+                    GiNaC::ex_to<numeric>(x).is_real() && !GiNaC::ex_to<numeric>(x).is_rational() &&
+                    GiNaC::abs(GiNaC::ex_to<numeric>(x)) >= numeric(10000000000L))
+                    return num::round_digits(num::evalf_reduced(f(num::decimal_floats_of(x)), GiNaC::Digits),
+                                             GiNaC::Digits);
                 return f(x);
             });
         });
