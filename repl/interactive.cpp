@@ -174,6 +174,9 @@ char** complete(const char* text, int start, int) {
     if (g_candidates.size() == 1 && start == 0 &&
         (g_candidates[0] == "help" || g_candidates[0] == "quit" || g_candidates[0] == "exit"))
         rl_completion_append_character = ' ';
+    // the declarations are followed by the names they declare: vector w, positive g
+    if (g_candidates.size() == 1 && (g_candidates[0] == "vector" || g_candidates[0] == "positive"))
+        rl_completion_append_character = ' ';
     return rl_completion_matches(text, next_candidate);
 }
 

@@ -35,6 +35,7 @@ const char* usage_text =
     "  --echo          print each statement (\"> \" and its source text) before its result\n"
     "  --stop-on-error stop at the first failed statement (exit status 1)\n"
     "  --time-limit S  stop a statement that runs longer than S seconds (an error; the run goes on)\n"
+    "  --max-statement N  the longest statement read, in bytes (default 16777216); longer: an error\n"
     "  --no-caret      error reports without the source line and caret\n"
     "  --unicode       print cross and scalar products of vectors as w \u00d7 r, w \u00b7 r\n"
     "  --ascii         print them as w x r, w . r (the default, except at an interactive\n"
@@ -111,6 +112,17 @@ int main(int argc, char** argv) {
             ++i;
             continue;
         }
+        if (a == "--max-statement") {
+            char* end = nullptr;
+            const long long v = i + 1 < argc ? std::strtoll(argv[i + 1], &end, 10) : -1;
+            if (i + 1 >= argc || end == argv[i + 1] || *end || v < 1) {
+                std::cerr << "symrep: --max-statement needs a positive number of bytes\n" << usage_text;
+                return 2;
+            }
+            opts.max_statement = static_cast<std::size_t>(v);
+            ++i;
+            continue;
+        }
         if (a == "--unicode" || a == "--ascii") {
             unicode = a == "--unicode";
             continue;
@@ -157,9 +169,7 @@ int main(int argc, char** argv) {
     s.options() = opts;
     if (jobs.empty()) {
         if (prompt) return interactive(s);
-        std::stringstream ss;
-        ss << std::cin.rdbuf();
-        s.run_string(ss.str(), "<stdin>");
+        s.run_stream(std::cin, "<stdin>");  // statement by statement: each answer as soon as it is ready
         return s.failures() ? 1 : 0;
     }
     for (const auto& [code, text] : jobs) {

@@ -358,3 +358,22 @@ TEST(BadInput, EvalNamesAVectorWithoutValue) {
     EXPECT_EQ(test::what_of([&] { t.ex("eval(s, [w = [0, 0, 1]], t = 2)"); }),
               "eval: no value given for the vector r0 (give it as r0 = [x, y, z])");
 }
+
+// issue 13: an algebra element's coordinates are scalars (a vector was accepted)
+TEST(BadInput, ElementCoordinatesMustBeScalars) {
+    test::test_session t;
+    ASSERT_EQ(t.run("vector w"), 0);
+    expect_error<type_error>(t, "element(multicomplex(1), [w, 0, 0, 0])", "coordinate 0 must be a scalar, not a vector");
+    expect_error<type_error>(t, "element(multicomplex(1), [1, 2*w, 0, 0])", "coordinate 1 must be a scalar");
+    expect_error<type_error>(t, "element(multicomplex(1), [x = 1, 0, 0, 0])", "not a relation");
+    EXPECT_NO_THROW((void)t.val("element(multicomplex(1), [x, 0, 0, 1])"));
+}
+
+// issue 13: ?semiexponential described the multicomplex form for Sobrero too
+TEST(BadInput, SemiexponentialHelpNamesEachFamily) {
+    test::test_session t;
+    const auto* b = t.s.builtins().find("semiexponential");
+    ASSERT_NE(b, nullptr);
+    EXPECT_NE(b->summary.find("Sobrero: w = sum_k A_k exp(j phi_k) eps^k"), std::string::npos) << b->summary;
+    EXPECT_NE(b->summary.find("(there w is not rho exp(theta))"), std::string::npos) << b->summary;
+}

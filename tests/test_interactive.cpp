@@ -220,6 +220,21 @@ TEST(Interactive, TabCompletesFunctionName) {
     EXPECT_TRUE(t.wait_for("%1 = ")) << t.screen();
 }
 
+// issue 13: the declarations complete with a space, as the names they declare follow
+TEST(Interactive, TabCompletesDeclarationsWithASpace) {
+    REQUIRE_TMUX();
+    temp_home home;
+    terminal t(home.path);
+    ASSERT_TRUE(t.ready()) << t.screen();
+    t.line("vector qa, qb");  // "vect" is ambiguous (vector, vector_series): readline stops at "vector"
+    t.type("posi");
+    t.key("Tab");
+    t.line("pk");
+    ASSERT_TRUE(t.wait_for("> positive pk")) << t.screen();
+    t.line("sqrt(pk^2) + 0*qa . qb");
+    EXPECT_TRUE(t.wait_for("%1 = pk")) << t.screen();
+}
+
 TEST(Interactive, TabCompletesFileNameInLoad) {
     REQUIRE_TMUX();
     temp_home home;

@@ -63,6 +63,50 @@ TEST(Lexer, NewlinesInsideBracketsContinueTheStatement) {
     EXPECT_FALSE(needs_more_input("f(1, 2) # (\n"));
 }
 
+// issue 13: the recovery rule for unclosed brackets, the stream reader's line
+// tracker, statements read from the middle of a stream, the byte order mark
+TEST(Lexer, UnclosedBracketEndsAtALineStartingAStatement) {
+    EXPECT_TRUE(starts_statement("  y := 2"));
+    EXPECT_TRUE(starts_statement("vector w, v"));
+    EXPECT_TRUE(starts_statement("positive g"));
+    EXPECT_FALSE(starts_statement("vector"));
+    EXPECT_FALSE(starts_statement("  + y"));
+    EXPECT_FALSE(starts_statement("y == 2"));
+    auto t = tokenize("x := f(1,\ny := 2");
+    ASSERT_GE(t.size(), 9u);
+    EXPECT_EQ(t[6].kind, tok::error);
+    EXPECT_EQ(t[6].text, "'(' opened at line 1, column 7 is not closed (the next line starts a new statement)");
+    EXPECT_EQ(t[7].kind, tok::separator);
+    EXPECT_EQ(t[8].text, "y");
+    EXPECT_EQ(t[8].line, 2);
+    EXPECT_FALSE(needs_more_input("x := f(1,\ny := 2"));
+    EXPECT_TRUE(needs_more_input("x := f(1,\n  y + 2"));
+    line_tracker lt;
+    lt.feed("[1,");
+    EXPECT_FALSE(lt.complete());
+    lt.feed(" 2] # ) (");
+    EXPECT_TRUE(lt.complete());
+    lt.feed("1 + \\");
+    EXPECT_FALSE(lt.complete());
+    lt.feed("2");
+    EXPECT_TRUE(lt.complete());
+    lt.feed("\"(\" + (");
+    EXPECT_FALSE(lt.complete());
+}
+
+TEST(Lexer, FirstLineAndByteOrderMark) {
+    auto t = tokenize("\n  a", 40);
+    ASSERT_GE(t.size(), 2u);
+    EXPECT_EQ(t[1].line, 41);
+    EXPECT_EQ(t[1].column, 3);
+    auto b = tokenize("\xEF\xBB\xBF" "1");
+    ASSERT_EQ(b.size(), 2u);
+    EXPECT_EQ(b[0].kind, tok::number);
+    EXPECT_EQ(b[0].column, 1);
+    auto later = tokenize("\xEF\xBB\xBF" "1", 2);  // only at the start of the text
+    EXPECT_EQ(later[0].kind, tok::error);
+}
+
 TEST(Lexer, BadCharacterIsAnErrorToken) {
     auto t = tokenize("1 $ 2");
     EXPECT_EQ(t[1].kind, tok::error);

@@ -9,6 +9,7 @@
 #include "lang/builtins.h"
 #include "output/printer.h"
 #include "core/expression_size.h"
+#include "vector/vector.h"
 
 namespace symrep::lang {
 
@@ -56,6 +57,11 @@ void register_algebra_builtins(registry& r) {
             if (c.size() != A->dim())
                 throw algebra_error(b.name + ": " + A->name() + " has dimension " + std::to_string(A->dim()) +
                                     ", but " + std::to_string(c.size()) + " coordinates were given");
+            for (std::size_t k = 0; k < c.size(); ++k)  // coordinates are scalars: no vector, matrix or relation
+                if (!vector_symbols(c[k]).empty() || has_matrix(c[k]) || GiNaC::is_a<GiNaC::relational>(c[k]))
+                    throw type_error(b.name + ": coordinate " + std::to_string(k) + " must be a scalar, not " +
+                                     (GiNaC::is_a<GiNaC::relational>(c[k]) ? "a relation" : "a vector") + " (" +
+                                     output::print_ex(c[k]) + ")");
             return value(element(A, coeffs(c.begin(), c.end())));
         });
     add(r, "basis", "basis(A, k)", "The basis element eps_k of A (k = 0 .. dim(A) - 1).", "(II.1.1)",
@@ -181,8 +187,8 @@ void register_algebra_builtins(registry& r) {
             return value(l);
         });
     add(r, "semiexponential", "semiexponential(w)",
-        "The semiexponential form w = rho exp(theta): returns the list [rho, theta] of elements.",
-        "(III.1.72-76, III.2.16)", "semiexponential(element(multicomplex(1), [1, 2, 3, 4]))", 1, 1,
+        "The semiexponential form, as the list [rho, theta] of elements. Multicomplex: w = rho exp(theta), rho = sum r_p e_p (the moduli of the idempotent components) and theta = sum i0 phi_p e_p (their arguments). Sobrero: w = sum_k A_k exp(j phi_k) eps^k, coordinate by coordinate, rho = sum A_k eps^k with A_k = sqrt(a_k^2 + b_k^2) and theta = sum j phi_k eps^k with phi_k = atan2(b_k, a_k) in [0, 2 pi) (there w is not rho exp(theta)).",
+        "(III.1.72-76, III.2.16-18)", "semiexponential(element(multicomplex(1), [1, 2, 3, 4]))", 1, 1,
         [](const builtin& b, const args_t& a, context&) {
             const element& w = arg_element(a, 0, b);
             auto [rho, theta] = w.parent().semiexponential(w.coefficients());

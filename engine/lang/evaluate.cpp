@@ -204,6 +204,8 @@ value session::eval_inner(const node& n) {
         case node::string: return n.text;
         case node::boolean: return n.text == "true";
         case node::ident: {
+            if (const auto f = failed_.find(n.text); f != failed_.end())
+                throw type_error(n.text + " has no value: its assignment at " + f->second + " failed");
             if (const value* v = get(n.text)) return *v;
             if (n.text == "pi") return ex(GiNaC::Pi);
             if (n.text == "I") return ex(GiNaC::I);
@@ -252,9 +254,37 @@ value session::eval_inner(const node& n) {
             return binary_op(n.text, a, b);
         }
         case node::chain: {
+            // A run of plain scalars (no matrix, relation, list or vector) is
+            // collected and built as one GiNaC sum or product at once: adding
+            // the terms one by one costs O(N^2) for N terms (each a + b copies
+            // the sum so far). Anything else goes through binary_op, in order.
+            const bool sum = n.text.find_first_of("+-") != std::string::npos;
+            const auto plain = [](const value& v) {
+                if (!v.is_ex()) return false;
+                const ex& e = v.as_ex();
+                return !is_a<GiNaC::relational>(e) && !is_a<GiNaC::lst>(e) && !has_matrix(e) &&
+                       vector_symbols(e).empty();
+            };
             value acc = eval(*n.kids[0]);
+            std::optional<bool> acc_plain;  // plain(acc), computed once per value of acc
+            GiNaC::exvector run;  // the collected operands (acc not yet updated with them)
+            const auto flush = [&] {
+                if (run.empty()) return;
+                run.insert(run.begin(), acc.as_ex());
+                acc = sum ? ex(GiNaC::add(run)) : ex(GiNaC::mul(run));
+                run.clear();
+            };
             for (std::size_t i = 0; i < n.text.size(); ++i) {
                 value b = eval(*n.kids[i + 1]);
+                const char op = n.text[i];
+                if (!acc_plain) acc_plain = plain(acc);
+                if (*acc_plain && plain(b) && !(op == '/' && b.as_ex().is_zero())) {
+                    const ex& e = b.as_ex();
+                    run.push_back(op == '+' || op == '*' ? e : op == '-' ? -e : GiNaC::pow(e, -1));
+                    continue;
+                }
+                flush();
+                acc_plain.reset();
                 try {
                     acc = binary_op(std::string(1, n.text[i]), acc, b);
                 } catch (const std::exception& e) {
@@ -263,6 +293,7 @@ value session::eval_inner(const node& n) {
                                        std::current_exception());
                 }
             }
+            flush();
             return acc;
         }
         case node::call: return call(n);

@@ -51,7 +51,10 @@ GiNaC::ex session::symbol(const std::string& name) {
     return s;
 }
 
-void session::set(const std::string& name, value v) { vars_[name] = std::move(v); }
+void session::set(const std::string& name, value v) {
+    failed_.erase(name);
+    vars_[name] = std::move(v);
+}
 
 const value* session::get(const std::string& name) const {
     auto it = vars_.find(name);
@@ -99,6 +102,45 @@ std::size_t offset_of(const std::string& text, int line, int column) {
     return p;
 }
 
+/// s with its control bytes (other than tab and newline) written \xNN, so that
+/// binary input does not reach the terminal raw in echoes and messages.
+std::string escape_controls(const std::string& s) {
+    std::string r;
+    r.reserve(s.size());
+    for (const char c : s) {
+        const auto u = static_cast<unsigned char>(c);
+        if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7F) {
+            static const char* hex = "0123456789ABCDEF";
+            r += "\\x";
+            r += hex[u >> 4];
+            r += hex[u & 15];
+        } else {
+            r += c;
+        }
+    }
+    return r;
+}
+
+/// msg with each run of more than 60 digits shortened to its first and last 20
+/// digits and the count ("12345...67890 (19800 digits)"): a message names a
+/// number, it does not print it whole.
+std::string shorten_numbers(const std::string& msg) {
+    std::string r;
+    std::size_t i = 0;
+    while (i < msg.size()) {
+        if (!std::isdigit(static_cast<unsigned char>(msg[i]))) { r += msg[i++]; continue; }
+        std::size_t j = i;
+        while (j < msg.size() && std::isdigit(static_cast<unsigned char>(msg[j]))) ++j;
+        const std::size_t n = j - i;
+        if (n > 60)
+            r += msg.substr(i, 20) + "..." + msg.substr(j - 20, 20) + " (" + std::to_string(n) + " digits)";
+        else
+            r += msg.substr(i, n);
+        i = j;
+    }
+    return r;
+}
+
 std::string trimmed(const std::string& s) {
     const std::size_t a = s.find_first_not_of(" \t\r\n;");
     if (a == std::string::npos) return {};
@@ -109,8 +151,9 @@ std::string trimmed(const std::string& s) {
 }  // namespace
 
 
-void session::report(const source_location& where, const std::string& msg) {
+void session::report(const source_location& where, const std::string& message) {
     ++failures_;
+    const std::string msg = escape_controls(shorten_numbers(message));
     if (opts_.stop_on_error) stopped_ = true;
     if (opts_.format == output_options::json) {
         *err_ << "{\"error\": " << json_quote(msg) << ", \"file\": " << json_quote(where.file)
@@ -121,14 +164,15 @@ void session::report(const source_location& where, const std::string& msg) {
     *err_ << where.file << ":" << where.line << ":" << where.column << ": error: " << msg << "\n";
     if (opts_.caret) {
         auto it = sources_.find(where.file);
-        if (it != sources_.end() && where.line >= 1) {
-            std::string l = line_of(it->second, where.line);
+        const int first = source_line_.count(where.file) ? source_line_[where.file] : 1;
+        if (it != sources_.end() && where.line >= first) {
+            std::string l = line_of(it->second, where.line - first + 1);
             if (!l.empty() && l.back() == '\r') l.pop_back();
             if (!l.empty() && where.column >= 1 && static_cast<std::size_t>(where.column) <= l.size() + 1) {
                 std::string pad;  // one blank per character before the column (tabs kept)
                 for (std::size_t i = 0; i < offset_of(l, 1, where.column); ++i)
                     if (!utf8_continuation(l[i])) pad += l[i] == '\t' ? '\t' : ' ';
-                *err_ << "    " << l << "\n    " << pad << "^\n";
+                *err_ << "    " << escape_controls(l) << "\n    " << pad << "^\n";
             }
         }
     }
@@ -149,15 +193,13 @@ int session::run_file(const std::string& path) {
         report({path, 1, 1}, "cannot open file '" + full + "'");
         return 1;
     }
-    std::stringstream ss;
-    ss << in.rdbuf();
     std::string dir = fs::path(full).parent_path().string();
     dirs_.push_back(dir);
     int failed = 0;
     try {
         // top-level files keep the name they were given; loaded files show
         // the resolved path, so that the report says where they are
-        failed = run_string(ss.str(), dirs_.size() > 1 ? full : path);
+        failed = run_stream(in, dirs_.size() > 1 ? full : path);
     } catch (...) {
         dirs_.pop_back();
         throw;
@@ -166,17 +208,93 @@ int session::run_file(const std::string& path) {
     return failed;
 }
 
-int session::run_string(const std::string& text, const std::string& name) {
+int session::run_string(const std::string& text, const std::string& name) { return run_text(text, name, 1); }
+
+int session::run_stream(std::istream& in, const std::string& name) {
     const int before = failures_;
     if (stopped_) return 0;
-    parser p(text, name);
+    std::streambuf* buf = in.rdbuf();
+    const std::size_t limit = std::max<std::size_t>(opts_.max_statement, 1);
+    line_tracker tracker;
+    std::string pending, line;
+    int line_no = 1, first = 1;  // the number of the next line to read; of pending's first line
+    bool at_eof = false;
+    // Reads one line into `line` (without '\n'), at most `cap` bytes; returns
+    // false when the line was cut at the cap.
+    const auto read_line = [&](std::size_t cap) {
+        line.clear();
+        for (;;) {
+            const int c = buf->sbumpc();
+            if (c == std::char_traits<char>::eof()) { at_eof = true; return true; }
+            if (c == '\n') return true;
+            if (line.size() >= cap) { buf->sungetc(); return false; }
+            line += static_cast<char>(c);
+        }
+    };
+    while (!at_eof && !stopped_) {
+        const std::size_t room = limit > pending.size() ? limit - pending.size() : 0;
+        if (!read_line(room)) {
+            // too long: report, then skip to the end of the statement (the next
+            // line end); give up on the input if no line end comes within another
+            // max(limit, 64 MiB) bytes (binary input, /dev/zero)
+            const std::size_t skip_budget = std::max<std::size_t>(limit, std::size_t(64) << 20);
+            report({name, first, 1}, "statement longer than " + std::to_string(limit) +
+                                         " bytes (the limit of one statement, --max-statement); skipped up to the next line end");
+            pending.clear();
+            tracker.reset();
+            bool ended = false;
+            while (!ended && !at_eof) {
+                std::size_t skipped = 0;
+                bool found = false;
+                for (;;) {  // to the next line end, at most `limit` bytes
+                    const int c = buf->sbumpc();
+                    if (c == std::char_traits<char>::eof()) { at_eof = true; break; }
+                    if (c == '\n') { found = true; break; }
+                    if (++skipped > skip_budget) break;
+                }
+                if (!found && !at_eof) {
+                    report({name, line_no, 1}, "no line end within " + std::to_string(skip_budget) +
+                                                   " bytes after an over-long statement: the rest of the input is not read");
+                    at_eof = true;
+                    break;
+                }
+                ++line_no;
+                ended = true;
+            }
+            first = line_no;
+            continue;
+        }
+        if (at_eof && line.empty()) break;
+        tracker.feed(line);
+        pending += line;
+        pending += '\n';
+        ++line_no;
+        if (tracker.complete()) {
+            run_text(pending, name, first);
+            out_->flush();
+            pending.clear();
+            first = line_no;
+        }
+    }
+    if (!pending.empty() && !stopped_) run_text(pending, name, first);
+    out_->flush();
+    return failures_ - before;
+}
+
+int session::run_text(const std::string& text, const std::string& name, int first_line) {
+    const int before = failures_;
+    if (stopped_) return 0;
+    parser p(text, name, first_line);
     files_.push_back(name);
     sources_[name] = text;
+    source_line_[name] = first_line;
     while (!p.at_end() && !stopped_) {
         node_ptr s;
         try {
             s = p.next_statement();
         } catch (const syntax_error& e) {
+            if (!p.assigned_name().empty() && !get(p.assigned_name()))
+                failed_[p.assigned_name()] = name + ":" + std::to_string(p.statement_begin().first);
             report(e.where, std::string("syntax error: ") + e.what());
             p.recover();
             continue;
@@ -186,13 +304,21 @@ int session::run_string(const std::string& text, const std::string& name) {
         if (opts_.echo) {
             const auto [bl, bc] = p.statement_begin();
             const auto [el, ec] = p.statement_end();
-            const std::size_t a = offset_of(text, bl, bc);
-            std::size_t b = offset_of(text, el, ec);
+            const std::size_t a = offset_of(text, bl - first_line + 1, bc);
+            std::size_t b = offset_of(text, el - first_line + 1, ec);
             if (b <= a) b = text.find('\n', a) == std::string::npos ? text.size() : text.find('\n', a);
-            *out_ << "> " << trimmed(text.substr(a, b - a)) << "\n";
+            *out_ << "> " << escape_controls(trimmed(text.substr(a, b - a))) << "\n";
         }
         try {
-            exec(*s, true);
+            try {
+                exec(*s, true);
+            } catch (...) {
+                // a name left without a value must not read as a free symbol later
+                // (a name that had a value keeps it)
+                if (s->kind == node::assign && !get(s->text))
+                    failed_[s->text] = name + ":" + std::to_string(s->line);
+                throw;
+            }
         } catch (const script_error& e) {
             report(e.where, e.what());
         } catch (const std::bad_alloc& e) {

@@ -65,6 +65,9 @@ struct output_options {
     /// Seconds a statement may run (0: no limit); checked at every evaluation step
     /// of the language, so one long library call is not cut short.
     double time_limit = 0;
+    /// The longest statement (bytes) the stream reader takes; a longer one is
+    /// reported ("statement longer than ... bytes") and skipped to its end.
+    std::size_t max_statement = std::size_t(16) << 20;
 };
 
 class session : public context {
@@ -91,6 +94,12 @@ public:
     /// being run, else to the base directory). An unreadable file counts as one
     /// failure, reported as "FILE:1:1: error: cannot open ..." (a directory too).
     int run_file(const std::string& path);
+    /// Reads `in` statement by statement (a statement ends at the end of a line
+    /// where no bracket is open, see syntax/lexer.h) and runs each as soon as it
+    /// ends, flushing out() after it: a program driving symrep through a pipe
+    /// gets each answer at once. One statement is at most
+    /// options().max_statement bytes. Returns how many statements failed.
+    int run_stream(std::istream& in, const std::string& name);
     /// Evaluates the statements of `text` silently (no echo; print() still
     /// writes to out()) and returns the value of the last one. Throws
     /// script_error (syntax errors too) at the first failure.
@@ -162,6 +171,9 @@ private:
     long digits_at_start_;  ///< GiNaC::Digits, restored by the destructor
     symrep::notation notation_at_start_;  ///< symrep::vector_notation(), restored by the destructor
     std::map<std::string, std::string> sources_;  ///< script texts by name (for the caret)
+    std::map<std::string, int> source_line_;      ///< the line number of the first line in sources_
+    std::map<std::string, std::string> failed_;   ///< names whose last assignment failed: FILE:LINE
+    int run_text(const std::string& text, const std::string& name, int first_line);
     std::vector<value> results_;  ///< %1, %2, ...
     std::chrono::steady_clock::time_point statement_start_;  ///< for options().time_limit
     unsigned ticks_ = 0;

@@ -41,10 +41,44 @@ std::size_t utf8_length(const std::string& s, std::size_t i) {
 
 }  // namespace
 
-std::vector<token> tokenize(const std::string& text) {
+bool starts_statement(const std::string& s, std::size_t i) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    if (i >= s.size() || !ident_start(s[i])) return false;
+    const std::size_t a = i;
+    while (i < s.size() && ident_char(s[i])) ++i;
+    const std::string name = s.substr(a, i - a);
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    if (i + 1 < s.size() && s[i] == ':' && s[i + 1] == '=') return true;
+    return (name == "vector" || name == "positive") && i > a + name.size() && i < s.size() && ident_start(s[i]);
+}
+
+void line_tracker::feed(const std::string& line) {
+    if (depth_ > 0 && starts_statement(line)) depth_ = 0;
+    bool comment = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == '#') { comment = true; break; }
+        if (c == '"') {
+            for (++i; i < line.size() && line[i] != '"'; ++i)
+                if (line[i] == '\\') ++i;
+            continue;
+        }
+        if (c == '(' || c == '[') ++depth_;
+        else if ((c == ')' || c == ']') && depth_ > 0) --depth_;
+        else if (c == ';') depth_ = 0;
+    }
+    std::size_t n = line.size();
+    if (n > 0 && line[n - 1] == '\r') --n;
+    continued_ = !comment && n > 0 && line[n - 1] == '\\';
+}
+
+std::vector<token> tokenize(const std::string& text, int first_line) {
     std::vector<token> out;
     scanner sc(text);
-    int depth = 0;
+    sc.line = first_line;
+    if (first_line == 1 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) sc.i = 3;  // a UTF-8 byte order mark
+    struct opened { char c; int line, column; };
+    std::vector<opened> open;  // the open brackets
     auto push = [&](tok k, std::string t, int l, int c) { out.push_back({k, std::move(t), l, c}); };
     while (!sc.done()) {
         const char c = sc.peek();
@@ -55,9 +89,19 @@ std::vector<token> tokenize(const std::string& text) {
         }
         if (c == '\n' || c == ';') {
             sc.get();
-            if (c == ';' || depth == 0) {
+            if (c == '\n' && !open.empty() && starts_statement(text, sc.i)) {
+                // recovery: the next line starts a statement, so the bracket is not closed
+                const opened o = open.back();
+                push(tok::error,
+                     std::string("'") + o.c + "' opened at line " + std::to_string(o.line) + ", column " +
+                         std::to_string(o.column) +
+                         " is not closed (the next line starts a new statement)",
+                     l, co);
+                open.clear();
+            }
+            if (c == ';' || open.empty()) {
                 // ';' inside brackets is a separator too: it ends the broken statement.
-                if (c == ';') depth = 0;
+                if (c == ';') open.clear();
                 push(tok::separator, c == ';' ? ";" : "\\n", l, co);
             }
             continue;
@@ -150,8 +194,8 @@ std::vector<token> tokenize(const std::string& text) {
         if (c == '<' && n == '=') { two("<="); continue; }
         if (c == '>' && n == '=') { two(">="); continue; }
         switch (c) {
-            case '(': case '[': ++depth; push(tok::op, std::string(1, c), l, co); break;
-            case ')': case ']': if (depth > 0) --depth; push(tok::op, std::string(1, c), l, co); break;
+            case '(': case '[': open.push_back({c, l, co}); push(tok::op, std::string(1, c), l, co); break;
+            case ')': case ']': if (!open.empty()) open.pop_back(); push(tok::op, std::string(1, c), l, co); break;
             case '+': case '-': case '*': case '/': case '^': case ',': case '=': case '<': case '>': case '.':
             case '|':
                 push(tok::op, std::string(1, c), l, co);
@@ -169,23 +213,15 @@ std::vector<token> tokenize(const std::string& text) {
 }
 
 bool needs_more_input(const std::string& text) {
-    int depth = 0;
-    bool in_string = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (in_string) {
-            if (c == '\\') ++i;
-            else if (c == '"') in_string = false;
-            else if (c == '\n') in_string = false;
-            continue;
-        }
-        if (c == '#') { while (i < text.size() && text[i] != '\n') ++i; continue; }
-        if (c == '"') in_string = true;
-        else if (c == '(' || c == '[') ++depth;
-        else if ((c == ')' || c == ']') && depth > 0) --depth;
-        else if (c == ';') depth = 0;
+    line_tracker t;
+    std::size_t a = 0;
+    for (;;) {
+        const std::size_t b = text.find('\n', a);
+        t.feed(text.substr(a, b == std::string::npos ? std::string::npos : b - a));
+        if (b == std::string::npos) break;
+        a = b + 1;
     }
-    return depth > 0 || in_string;
+    return !t.complete();
 }
 
 }  // namespace symrep::lang

@@ -32,7 +32,35 @@ struct token {
 };
 
 /// Splits text into tokens; never throws (malformed input gives tok::error tokens).
-std::vector<token> tokenize(const std::string& text);
+/// `first_line` is the line number of the text's first line (a statement read
+/// from the middle of a stream). A UTF-8 byte order mark at the very start of
+/// the text (first_line 1) is skipped.
+///
+/// Recovery from an unclosed bracket: while a '(' or '[' is open, a line whose
+/// first token starts a statement (`NAME :=`, or `vector`/`positive` followed
+/// by a name: text that can never continue an expression) ends the broken
+/// statement: an error token naming the open bracket, then a separator, and the
+/// line is read as a new statement.
+std::vector<token> tokenize(const std::string& text, int first_line = 1);
+
+/// True when the line (from `pos` on) starts a statement in the sense above.
+bool starts_statement(const std::string& text, std::size_t pos = 0);
+
+/// Follows, line by line, whether the lines read so far end a statement: no
+/// '(' or '[' open (with the recovery rule above), no '\' continuation. Used by
+/// the stream reader (lang/interpreter.cpp) to run each statement as soon as it ends.
+class line_tracker {
+public:
+    /// Takes one line (without its '\n').
+    void feed(const std::string& line);
+    /// True when the lines fed so far are complete statements.
+    bool complete() const { return depth_ == 0 && !continued_; }
+    void reset() { depth_ = 0; continued_ = false; }
+
+private:
+    int depth_ = 0;
+    bool continued_ = false;
+};
 
 /// True while the text has an open '(' or '[' or an unterminated string, i.e. an
 /// interactive reader should ask for another line before running it.

@@ -5,7 +5,8 @@
 
 namespace symrep::lang {
 
-parser::parser(const std::string& text, std::string file) : toks_(tokenize(text)), file_(std::move(file)) {}
+parser::parser(const std::string& text, std::string file, int first_line)
+    : toks_(tokenize(text, first_line)), file_(std::move(file)) {}
 
 const token& parser::peek(std::size_t k) const {
     const std::size_t i = pos_ + k;
@@ -64,6 +65,7 @@ bool parser::at_end() const {
 
 node_ptr parser::next_statement() {
     depth_ = 0;
+    assigned_.clear();
     while (peek().kind == tok::separator) get();
     if (peek().kind == tok::end) return nullptr;
     begin_ = {peek().line, peek().column};
@@ -73,6 +75,7 @@ node_ptr parser::next_statement() {
         s = declaration();
     } else if (peek().kind == tok::ident && is_op(":=", 1)) {
         const token& name = get();
+        assigned_ = name.text;
         const token& op = get();
         s = make(node::assign, op, name.text);
         s->line = name.line;

@@ -29,8 +29,9 @@ namespace symrep::lang {
 
 class parser {
 public:
-    /// `file` is the name used in error locations.
-    parser(const std::string& text, std::string file);
+    /// `file` is the name used in error locations; `first_line` the number of
+    /// the text's first line (a statement read from the middle of a stream).
+    parser(const std::string& text, std::string file, int first_line = 1);
     /// True when all statements have been read.
     bool at_end() const;
     /// The next statement (nullptr for an empty statement). Throws syntax_error;
@@ -42,6 +43,9 @@ public:
     /// token) and ends (its separator or the end of the text): line, column.
     std::pair<int, int> statement_begin() const { return begin_; }
     std::pair<int, int> statement_end() const { return end_; }
+    /// The name assigned by the last statement that next_statement() began
+    /// (`NAME := ...`), also when it threw; empty for other statements.
+    const std::string& assigned_name() const { return assigned_; }
 
 private:
     const token& peek(std::size_t k = 0) const;
@@ -65,6 +69,7 @@ private:
     int depth_ = 0;  ///< nesting of unary/primary, limited to keep the stack safe
     std::string file_;
     std::pair<int, int> begin_{1, 1}, end_{1, 1};
+    std::string assigned_;
 };
 
 /// Parses a whole text; throws the first syntax_error.
