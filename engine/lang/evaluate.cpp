@@ -271,7 +271,7 @@ value session::eval_inner(const node& n) {
             const auto flush = [&] {
                 if (run.empty()) return;
                 run.insert(run.begin(), acc.as_ex());
-                acc = sum ? ex(GiNaC::add(run)) : ex(GiNaC::mul(run));
+                acc = sum ? ex(GiNaC::dynallocate<GiNaC::add>(run)) : ex(GiNaC::dynallocate<GiNaC::mul>(run));
                 run.clear();
             };
             for (std::size_t i = 0; i < n.text.size(); ++i) {

@@ -237,6 +237,7 @@ int session::run_stream(std::istream& in, const std::string& name) {
             // too long: report, then skip to the end of the statement (the next
             // line end); give up on the input if no line end comes within another
             // max(limit, 64 MiB) bytes (binary input, /dev/zero)
+            sources_.erase(name);  // no caret: the statement was not kept
             const std::size_t skip_budget = std::max<std::size_t>(limit, std::size_t(64) << 20);
             report({name, first, 1}, "statement longer than " + std::to_string(limit) +
                                          " bytes (the limit of one statement, --max-statement); skipped up to the next line end");
@@ -246,7 +247,7 @@ int session::run_stream(std::istream& in, const std::string& name) {
             while (!ended && !at_eof) {
                 std::size_t skipped = 0;
                 bool found = false;
-                for (;;) {  // to the next line end, at most `limit` bytes
+                for (;;) {  // to the next line end, at most skip_budget bytes
                     const int c = buf->sbumpc();
                     if (c == std::char_traits<char>::eof()) { at_eof = true; break; }
                     if (c == '\n') { found = true; break; }
@@ -286,6 +287,11 @@ int session::run_text(const std::string& text, const std::string& name, int firs
     if (stopped_) return 0;
     parser p(text, name, first_line);
     files_.push_back(name);
+    // a file that loads itself replaces the text of the caller's statement:
+    // put it back at the end, for the caret of the caller's later errors
+    const auto saved = sources_.count(name) ? std::optional<std::pair<std::string, int>>(
+                                                  {sources_[name], source_line_.count(name) ? source_line_[name] : 1})
+                                            : std::nullopt;
     sources_[name] = text;
     source_line_[name] = first_line;
     while (!p.at_end() && !stopped_) {
@@ -332,6 +338,10 @@ int session::run_text(const std::string& text, const std::string& name, int firs
         }
     }
     files_.pop_back();
+    if (saved) {
+        sources_[name] = saved->first;
+        source_line_[name] = saved->second;
+    }
     out_->flush();
     return failures_ - before;
 }
