@@ -320,3 +320,36 @@ TEST(CauchyProblem, SkewMatrixAndRotationOperator) {
     EXPECT_TRUE(t.val("check(ode(r' + w x r = 0, r(0) = x), E)").as_bool());
     EXPECT_TRUE(t.val("rotation_operator(0, t, x) == x").as_bool());
 }
+
+// Issue 13 (4.2): floats in a problem are the exact binary numbers they denote;
+// the solver derives with those rationals and rounds once, so a real problem has
+// no imaginary rounding residue (main printed (1 - 1.69e-21*I) cos(...)).
+TEST(CauchyProblemIssue13, FloatsInAProblemAreExactRationals) {
+    test_session t;
+    ASSERT_EQ(t.run("P := ode(y'' + 0.2*y' + 4*y = 0, y(0) = 1, y'(0) = 0)\ns := solve(P)"), 0) << t.err.str();
+    const ex s = t.ex("s");
+    EXPECT_FALSE(s.has(GiNaC::I)) << s;
+    // against the exact solution e^(-t/10) (cos(b t) + sin(b t)/(10 b)), b = sqrt(399)/10, at t = 1
+    // (0.2 is 0.2 up to 1e-17 relative, so 1e-12 is generous)
+    const double b = std::sqrt(399.0) / 10, exact = std::exp(-0.1) * (std::cos(b) + std::sin(b) / (10 * b));
+    const double at1 = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(t.ex("eval(s, [], t = 1)"))).to_double();
+    EXPECT_NEAR(at1, exact, 1e-12);
+}
+
+// Issue 13 (4.1): s^2 + c s + w0^2 with symbolic c, w0 has a discriminant of no
+// decidable sign; the oscillating form is given, which is even in the square root
+// and so the solution for either sign (cos(i x) = cosh x). Main refused it.
+TEST(CauchyProblemIssue13, UndecidableDiscriminantSignGivesAFormForBothSigns) {
+    test_session t;
+    ASSERT_EQ(t.run("positive w0, c\nQ := ode(y'' + c*y' + w0^2*y = 0, y(0) = 1, y'(0) = 0)\nq := solve(Q)"), 0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(Q, q)").as_bool());  // symbolic residual 0
+    // underdamped: against Boost.Odeint (tolerance as ClosedFormsAgreeWithNumericalIntegration)
+    const double rel = GiNaC::ex_to<GiNaC::numeric>(t.ex("verify(Q, q, [c = 0.7, w0 = 1.5], 10)")).to_double();
+    EXPECT_LT(rel, 1e-8);
+    // overdamped (c = 5, w0 = 3/2: roots -1/2, -9/2): y = (9 e^(-t/2) - e^(-9t/2))/8, at t = 1
+    const double exact = (9 * std::exp(-0.5) - std::exp(-4.5)) / 8;
+    const double at1 =
+        GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(t.ex("eval(q, [c = 5, w0 = 3/2], t = 1)"))).to_double();
+    EXPECT_NEAR(at1, exact, 1e-12);
+}

@@ -23,15 +23,19 @@ std::string rank_list(const std::vector<std::size_t>& r) {
     return os.str();
 }
 
-// Product of the factors, multiplied pairwise (balanced) and expanded at each level.
+// Product of the factors, multiplied pairwise (a balanced product tree) and
+// expanded at each level. The guard bounds the result by its monomials when the
+// factors are polynomials (2^n quadratics in X: 2^(n+1) + 1 terms), and each
+// pairwise product again before it is made.
 ex expanded_product(std::vector<ex> f) {
     if (f.empty()) return 1;
-    ex all = 1;
-    for (const ex& x : f) all *= x;
-    guard_expansion(all, "the product of the factors", false);
+    guard_terms(product_terms(f), "the product of the factors");
     while (f.size() > 1) {
         std::vector<ex> g;
-        for (std::size_t k = 0; k + 1 < f.size(); k += 2) g.push_back(GiNaC::expand(f[k] * f[k + 1]));
+        for (std::size_t k = 0; k + 1 < f.size(); k += 2) {
+            guard_terms(product_terms({f[k], f[k + 1]}), "the product of the factors");
+            g.push_back(GiNaC::expand(f[k] * f[k + 1]));
+        }
         if (f.size() % 2) g.push_back(f.back());
         f = std::move(g);
     }

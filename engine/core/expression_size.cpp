@@ -1,6 +1,7 @@
 // symrep/core/expression_size.cpp
 #include "core/expression_size.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -104,6 +105,49 @@ double expanded_terms(const GiNaC::ex& e, bool fractions) {
     if (c.nodes > max_nodes) return saturated;
     const double den = f.den.empty() ? 0 : f.den_terms();
     return sat(sat(f.num + den) + c.inner);
+}
+
+namespace {
+
+// Collects the symbols of e; false when e is not a polynomial in them with
+// numeric coefficients (a function call, a non-integer or negative power, a
+// float, a matrix), where the monomial count bounds nothing.
+bool polynomial_symbols(const GiNaC::ex& e, GiNaC::exset& symbols) {
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+        symbols.insert(e);
+        return true;
+    }
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return GiNaC::ex_to<GiNaC::numeric>(e).is_crational();
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            if (!polynomial_symbols(e.op(i), symbols)) return false;
+        return true;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+        const GiNaC::ex& k = e.op(1);
+        if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_nonneg_integer()) return false;
+        return polynomial_symbols(e.op(0), symbols);
+    }
+    return false;
+}
+
+}  // namespace
+
+double product_terms(const std::vector<GiNaC::ex>& factors) {
+    GiNaC::ex all = 1;
+    for (const auto& f : factors) all *= f;
+    const double coarse = expanded_terms(all, false);
+    if (expression_nodes(all) >= max_nodes) return coarse;
+    GiNaC::exset symbols;
+    for (const auto& f : factors)
+        if (!polynomial_symbols(f, symbols)) return coarse;
+    double monomials = 1;
+    for (const auto& x : symbols) {
+        double degree = 0;
+        for (const auto& f : factors) degree += f.degree(x);
+        monomials = sat(monomials * (degree + 1));
+    }
+    return std::min(coarse, monomials);
 }
 
 double expression_nodes(const GiNaC::ex& e) {

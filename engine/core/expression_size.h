@@ -16,6 +16,8 @@
 
 #include <ginac/ginac.h>
 
+#include <vector>
+
 namespace symrep {
 
 /// An upper bound of the number of terms of e multiplied out: sums add, products
@@ -26,6 +28,13 @@ namespace symrep {
 /// that numerator and of the denominator. Saturates at 1e30; an expression tree
 /// of more than 10^7 nodes counts as 1e30.
 double expanded_terms(const GiNaC::ex& e, bool fractions);
+
+/// An upper bound of the terms of the product of `factors` multiplied out: the
+/// smaller of the bound of expanded_terms on the product and, when every factor
+/// is a polynomial with rational (or complex rational) coefficients in symbols
+/// x_1..x_k, the monomial count prod_j (sum_i deg_{x_j} f_i + 1) (a product of
+/// 2^n quadratics in X has 2^(n+1) + 1 terms, not 3^(2^n)).
+double product_terms(const std::vector<GiNaC::ex>& factors);
 
 /// An upper bound of the terms of det(m) (charpoly: of det(m - X I)): the
 /// product over the rows of the terms of their entries (the numbers of a row

@@ -5,6 +5,10 @@
 #include <cmath>
 #include <map>
 
+#include <cln/rational.h>
+#include <cln/real.h>
+#include <cln/complex.h>
+
 #include "scalar/scalar.h"
 #include "core/error.h"
 #include "vector/vector.h"
@@ -247,9 +251,39 @@ ex positive_trig_arguments(const ex& e, const ex& t) {
     return f(e);
 }
 
+// Floating-point numbers replaced by the exact rationals they denote (a float is
+// an exact binary number): the solver then derives with rationals, decides signs
+// and zeros exactly, and solve() rounds the exact solution once at the end.
+// (Deriving in floats left -1.69e-21*I in a real solution.)
+ex exact_floats(const ex& e) {
+    struct exact : GiNaC::map_function {
+        ex operator()(const ex& x) override {
+            if (GiNaC::is_a<GiNaC::numeric>(x)) {
+                const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(x);
+                if (n.is_crational()) return x;
+                const cln::cl_N z = n.to_cl_N();
+                return GiNaC::numeric(cln::complex(cln::rational(cln::realpart(z)), cln::rational(cln::imagpart(z))));
+            }
+            return x.map(*this);
+        }
+    } f;
+    return f(e);
+}
+
+bool problem_has_float(const cauchy_problem& P) {
+    return has_float(P.expression) || std::any_of(P.initial.begin(), P.initial.end(), has_float);
+}
+
 }  // namespace
 
 operator_form reduce(const cauchy_problem& P) {
+    if (problem_has_float(P)) {
+        cauchy_problem Q = P;
+        Q.expression = exact_floats(P.expression);
+        for (ex& x : Q.initial) x = exact_floats(x);
+        Q.reduced = nullptr;
+        return reduce(Q);
+    }
     const std::size_t M = P.order();
     if (M == 0) throw domain_error("the equation has no derivative of " + P.name);
     if (P.initial.size() != M)
@@ -360,7 +394,9 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 ex solve(const cauchy_problem& P) {
     const operator_form F = P.reduced ? *P.reduced : reduce(P);
     const rotation_operator_algebra R(F.Omega);
-    return vector_solution(P, F, solve(F.ode, R, P.t));
+    const ex x = vector_solution(P, F, solve(F.ode, R, P.t));
+    // derived exactly from the rationals the floats denote (reduce), rounded once here
+    return problem_has_float(P) ? GiNaC::evalf(x) : x;
 }
 
 bool has_float(const ex& e) {

@@ -203,7 +203,14 @@ std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a)
             } else if (d == 2) {
                 const ex c2 = fr.coeff(s, 2), c1 = fr.coeff(s, 1), c0 = fr.coeff(s, 0);
                 const ex disc = tidy(c1 * c1 - 4 * c2 * c0), re = tidy(-c1 / (2 * c2));
-                switch (discriminant_sign(disc)) {
+                // An undecidable sign (c^2 - 4 w0^2 of s^2 + c s + w0^2) takes the
+                // oscillating form e^(re t) (cos(r t), sin(r t)/r), r = sqrt(-disc)/(2 c2):
+                // it is even in r and analytic in disc, so it is the solution for
+                // either sign (cos(i x) = cosh(x), sin(i x)/i = sinh(x)); only the
+                // double root disc = 0 is excluded (generic reading).
+                int sign = discriminant_sign(disc);
+                if (sign == 2) sign = -1;
+                switch (sign) {
                     case 0: candidates.push_back({re, ex(0)}); break;
                     case 1: {
                         const ex r = tidy(exact_sqrt(disc) / (2 * c2));
