@@ -21,11 +21,13 @@ std::string without_timings(const std::string& s) {
     return std::regex_replace(s, time, "<time>");
 }
 
-void expect_twice_the_same(const std::string& args, const std::string* input, const std::string& what) {
+/// Runs twice and expects the same bytes; returns the first run's output.
+std::string expect_twice_the_same(const std::string& args, const std::string* input, const std::string& what) {
     const auto a = run_symrep(args, input, "", true);
     const auto b = run_symrep(args, input, "", true);
     EXPECT_EQ(a.status, b.status) << what;
     EXPECT_EQ(without_timings(a.out), without_timings(b.out)) << what << ": two runs printed different output";
+    return a.out;
 }
 
 TEST(Determinism, EveryExampleScriptPrintsTheSameBytesTwice) {
@@ -50,7 +52,12 @@ solve(G, [w = [0, 7.2921e-5, 0.0001], g = [0, 0, -9.81], r0 = [0, 0, 10.0], v0 =
 C := ode(r'' = q/m*(r' x B + E), r(0) = r0, r'(0) = v0)
 solve(C, [q = -3, m = 2, B = [1, 1, 1], E = [0, 1, 0], r0 = [0, 0, 0], v0 = [1, 0, 0]])
 )";
-    expect_twice_the_same("", &scenes, "scenes");
+    const std::string out = expect_twice_the_same("", &scenes, "scenes");
+    // the scenes really ran: one model report per solve, no error
+    std::size_t models = 0;
+    for (std::size_t p = 0; (p = out.find("solve: model:", p)) != std::string::npos; ++p) ++models;
+    EXPECT_EQ(models, 5u) << out;
+    EXPECT_EQ(out.find("error"), std::string::npos) << out;
 }
 
 }  // namespace

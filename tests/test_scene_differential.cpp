@@ -78,16 +78,28 @@ std::vector<double> numbers(const ex& e, const data_values& d) {
     return out;
 }
 
-void run_problem(const problem_case& pc, unsigned seed, int scenes) {
+/// What run_problem compared: the test bodies assert that the comparisons ran.
+struct tally {
+    int solved = 0;          ///< scenes solved by solve(P, values)
+    int equal_general = 0;   ///< scenes equal to solve(P) with the values put in
+    int general_singular = 0;
+    int checked = 0;         ///< scenes whose exact check passed
+    int evaluated = 0;       ///< eval comparisons within 1e-13
+};
+
+tally run_problem(const problem_case& pc, unsigned seed, int scenes) {
     SCOPED_TRACE(pc.name);
+    tally r;
     std::mt19937 gen(seed);
     test_session t;
-    ASSERT_EQ(t.run(pc.declarations + "\nP := " + pc.problem + "\nGs := solve(P)"), 0) << t.err.str();
+    if (t.run(pc.declarations + "\nP := " + pc.problem + "\nGs := solve(P)") != 0) {
+        ADD_FAILURE() << t.err.str();
+        return r;
+    }
     const mechanics::cauchy_problem& P = t.val("P").as_problem();
     const ex Gs = t.ex("Gs");
     builtin b;
     b.name = "test";
-    int general_singular = 0;
     for (int n = 0; n < scenes; ++n) {
         std::string vals = "[";
         for (std::size_t i = 0; i < pc.vectors.size(); ++i)
@@ -102,6 +114,7 @@ void run_problem(const problem_case& pc, unsigned seed, int scenes) {
             ADD_FAILURE() << "solve(P, vals) failed: " << t.err.str();
             continue;
         }
+        ++r.solved;
         const ex s = t.ex("s");
         const data_values d = read_values(t.val("vals"), b, 0);
         const mechanics::parameter_values v{d.vectors, d.scalars};
@@ -112,37 +125,52 @@ void run_problem(const problem_case& pc, unsigned seed, int scenes) {
             g = mechanics::put_values(Gs, v);
         } catch (const symrep::error&) {
             defined = false;
-            ++general_singular;
+            ++r.general_singular;
         }
         if (defined) {
-            EXPECT_TRUE(equal(s, g)) << "scene: " << to_string(s) << "\ngeneral: " << to_string(g);
+            const bool same = equal(s, g);
+            EXPECT_TRUE(same) << "scene: " << to_string(s) << "\ngeneral: " << to_string(g);
+            r.equal_general += same;
         }
         // the exact check of P with the values
         const mechanics::solution_check k = mechanics::check(mechanics::with_values(P, v), s);
         EXPECT_TRUE(k.residual_zero) << to_string(k.residual);
         EXPECT_TRUE(k.initial_ok);
+        r.checked += bool(k);
         // eval agrees with the general path (its exact limit where it is singular)
         for (const ex& T : {ex(GiNaC::numeric(7, 3)), ex(GiNaC::numeric(-1, 2))}) {
             data_values dt = d;
             dt.scalars[P.t] = T;
             const std::vector<double> a = numbers(s, dt), c = numbers(Gs, dt);
-            EXPECT_LE(relative_difference(a, c), 1e-13) << "t = " << T;
+            const double rel = relative_difference(a, c);
+            EXPECT_LE(rel, 1e-13) << "t = " << T;
+            r.evaluated += rel <= 1e-13;
         }
     }
-    std::cout << pc.name << ": " << scenes << " scenes, general form singular at " << general_singular
+    std::cout << pc.name << ": " << scenes << " scenes, general form singular at " << r.general_singular
               << " of them (compared through eval's limit)\n";
+    return r;
+}
+
+/// Every scene solved, checked and evaluated; most compared exactly with the general solution.
+void expect_all_compared(const tally& r, int scenes) {
+    EXPECT_EQ(r.solved, scenes);
+    EXPECT_EQ(r.checked, scenes);
+    EXPECT_EQ(r.evaluated, 2 * scenes);
+    EXPECT_EQ(r.equal_general + r.general_singular, scenes);
+    EXPECT_GE(r.equal_general, scenes / 2) << "too few scenes compared exactly with the general solution";
 }
 
 }  // namespace
 
 TEST(SceneDifferential, CentrifugalAndCoriolis) {
-    run_problem(problems[0], 13001, 50);
-    run_problem(problems[1], 13002, 50);
+    expect_all_compared(run_problem(problems[0], 13001, 50), 50);
+    expect_all_compared(run_problem(problems[1], 13002, 50), 50);
 }
 
 TEST(SceneDifferential, Charge) {
-    run_problem(problems[2], 13003, 50);
-    run_problem(problems[3], 13004, 50);
+    expect_all_compared(run_problem(problems[2], 13003, 50), 50);
+    expect_all_compared(run_problem(problems[3], 13004, 50), 50);
 }
 
-TEST(SceneDifferential, Foucault) { run_problem(problems[4], 13005, 50); }
+TEST(SceneDifferential, Foucault) { expect_all_compared(run_problem(problems[4], 13005, 50), 50); }
