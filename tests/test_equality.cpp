@@ -225,3 +225,28 @@ TEST(Equality, SimplifyDoesWhatTheZeroTestDoes) {
 }
 
 }  // namespace
+
+namespace {
+
+// check says false only for a residual shown nonzero; an undecided one is an error naming it
+TEST(Equality, CheckReportsAnUndecidedDifferenceNotFalse) {
+    std::ostringstream out, err;
+    session s(out, err);
+    s.evaluate("positive p");
+    const std::string m = [&] {
+        try {
+            s.evaluate("check(ode(y' = 0, y(0) = 1), sin(atan(p) + atan(1/p)))");
+        } catch (const symrep::error& e) {
+            return std::string(e.what());
+        }
+        return std::string("<no error>");
+    }();
+    EXPECT_NE(m.find("cannot decide"), std::string::npos) << m;
+    // a difference seen nonzero is still false
+    s.evaluate("vector r0");
+    const value v = s.evaluate("check(ode(r' = 0, r(0) = r0), 2*r0)");
+    ASSERT_TRUE(v.is_bool());
+    EXPECT_FALSE(v.as_bool());
+}
+
+}  // namespace

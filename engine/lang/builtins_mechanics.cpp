@@ -200,6 +200,26 @@ void register_mechanics_builtins(registry& r) {
                     return print_ex(subs_components(x, {}));
                 return print_ex(x);
             };
+            if (!k) {
+                // false only when shown: a residual or difference that is neither proved 0 nor
+                // seen nonzero at a point is undecided (scalar/equality.h), never reported as false
+                std::vector<std::pair<std::string, ex>> open;
+                if (!k.residual_zero) open.push_back({"the residual", k.residual});
+                for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
+                    if (!k.initial_differences[m].is_zero())
+                        open.push_back({P.unknown_name(m) + "(0) minus its value", k.initial_differences[m]});
+                bool some_no = false;
+                std::string undecided;
+                for (const auto& [what, x] : open) {
+                    const zero_decision z = P.is_vector ? decide_zero_vector(x) : decide_zero(x);
+                    if (z.is_zero == truth::no) some_no = true;
+                    if (z.is_zero != truth::no && undecided.empty()) undecided = what + " " + shown(x);
+                }
+                if (!some_no && !undecided.empty())
+                    throw domain_error(b.name + ": cannot decide whether " + undecided +
+                                       " is 0 (the zero test does not prove it, and no point was found where it "
+                                       "is not 0)");
+            }
             if (!k.residual_zero) c.out() << "check: the residual is " << shown(k.residual) << ", not 0\n";
             if (k && k.rounding > 0) {
                 std::ostringstream ratio;  // not on c.out(): its precision stays as it is

@@ -88,18 +88,12 @@ void check_float_exponent(const std::string& text) {
         throw size_error("the exponent of the number " + text + " is too large (the limit is 10^5 in absolute value)");
 }
 
-std::string num_str(const numeric& x) {
-    std::ostringstream os;
-    os << x;
-    return os.str();
-}
-
 long index_value(const value& v, std::size_t size) {
     if (!v.is_ex() || !is_a<numeric>(v.as_ex()) || !ex_to<numeric>(v.as_ex()).is_integer())
         throw type_error("an index must be an integer, not " + (v.is_ex() ? print_ex(v.as_ex()) : v.a_kind()));
     const numeric k = ex_to<numeric>(v.as_ex());
     if (k.is_negative() || k >= numeric(static_cast<long>(size)))
-        throw type_error("index " + num_str(k) + " out of range: valid indices are 0.." +
+        throw type_error("index " + print_ex(k) + " out of range: valid indices are 0.." +
                          (size == 0 ? std::string("(none, it is empty)") : std::to_string(size - 1)));
     return k.to_long();
 }
