@@ -353,3 +353,91 @@ TEST(CauchyProblemIssue13, UndecidableDiscriminantSignGivesAFormForBothSigns) {
         GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(t.ex("eval(q, [c = 5, w0 = 3/2], t = 1)"))).to_double();
     EXPECT_NEAR(at1, exact, 1e-12);
 }
+
+// Issue 13 (4.1): the damped Foucault pendulum r'' + c r' + 2 w x r' + w0^2 r = 0.
+// Its planar characteristic polynomial s^2 + (c + 2 i |w|) s + w0^2 has a complex
+// discriminant D = u + i v; main refused it ("irreducible factor of degree 4",
+// the p conj(p) route). Now its roots are -(c + 2 i |w|)/2 +- (p + i q)/2 with
+// p, q the real and imaginary part of sqrt(D) (nested radicals).
+TEST(CauchyProblemIssue13, DampedFoucaultIsSolvedOverC) {
+    test_session t;
+    ASSERT_EQ(t.run("vector w, r0, v0\n"
+                    "P := ode(r'' + c*r' + 2*w x r' + w0^2*r = 0, r(0) = r0, r'(0) = v0)\n"
+                    "s := solve(P)"),
+              0)
+        << t.err.str();
+    EXPECT_FALSE(t.ex("s").has(GiNaC::I)) << t.ex("s");
+    // against Boost.Odeint (rkf78 at 1e-12 tolerances, relative difference over
+    // [0, 10]): weakly damped, strongly damped (u > 0), and a skew axis; 1e-8 leaves
+    // four orders for the integrator's error growth
+    for (const char* vals : {"[w = [0, 0, 1], c = 1/5, w0 = 2, r0 = [1, 0, 0], v0 = [0, 0.3, 0]]",
+                             "[w = [0, 0, 1/2], c = 6, w0 = 1, r0 = [1, 0, 0], v0 = [0, 1, 0]]",
+                             "[w = [1, 2, -1], c = 3/7, w0 = 1/2, r0 = [1, 0, 2], v0 = [0, 1, 0]]"}) {
+        const double rel =
+            GiNaC::ex_to<GiNaC::numeric>(t.ex(std::string("verify(P, s, ") + vals + ", 10)")).to_double();
+        EXPECT_LT(rel, 1e-8) << vals;
+    }
+    // c = 0 is the undamped pendulum VI.2.94 (q-form: p = v/(2 q) -> 0 stays regular)
+    ASSERT_EQ(t.run("F := ode(r'' + 2*w x r' + w0^2*r = 0, r(0) = r0, r'(0) = v0)\nf := solve(F)\n"
+                    "vals := [w = [0, 1/3, 1], c = 0, w0 = 3/2, r0 = [1, 2, 0], v0 = [1, 0, 1]]"),
+              0)
+        << t.err.str();
+    for (const char* k : {"0", "1", "2"}) {
+        const double a = GiNaC::ex_to<GiNaC::numeric>(t.ex(std::string("eval(s, vals, t = 2.5)[") + k + "]")).to_double();
+        const double b = GiNaC::ex_to<GiNaC::numeric>(t.ex(std::string("eval(f, vals, t = 2.5)[") + k + "]")).to_double();
+        EXPECT_NEAR(a, b, 1e-12) << k;  // both closed forms evaluated at 1e-15 relative
+    }
+    // a scene with exact values: its own residual is proved 0 and it equals the
+    // general solution with the values put in
+    ASSERT_EQ(t.run("vals := [w = [1, 2, -1], c = 3/7, w0 = 1/2, r0 = [1, 0, 2], v0 = [0, 1, 0]]\n"
+                    "s2 := solve(P, vals)"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(P, s2, vals)").as_bool());
+    for (const char* k : {"0", "1", "2"}) {
+        const double a = GiNaC::ex_to<GiNaC::numeric>(t.ex(std::string("eval(s2, vals, t = 2)[") + k + "]")).to_double();
+        const double b = GiNaC::ex_to<GiNaC::numeric>(t.ex(std::string("eval(s, vals, t = 2)[") + k + "]")).to_double();
+        EXPECT_NEAR(a, b, 1e-12) << k;
+    }
+    // a wrong damping is caught by the exact check (the residual is not 0)
+    EXPECT_FALSE(t.val("check(ode(r'' + 2*c*r' + 2*w x r' + w0^2*r = 0, r(0) = r0, r'(0) = v0), s2, vals)").as_bool());
+}
+
+// Issue 13 (4.3): a constant literal vector acting by x or . is an axis like a
+// declared one (main: "declare it with 'vector'"); a numeric axis has a known
+// |w|, so signs are decided (w x (w x r) + r with |w|^2 = 2 is hyperbolic).
+TEST(CauchyProblemIssue13, LiteralRotationVectorsAreAxes) {
+    test_session t;
+    ASSERT_EQ(t.run("vector r0, v0, g\nQ := ode(r' + [0, 0, 1] x r = 0, r(0) = r0)\nq := solve(Q)"), 0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(Q, q)").as_bool());
+    // r' = -e3 x r turns r0 = e1 by -1 radian about e3: [cos 1, -sin 1, 0] (1e-15: exact closed form in doubles)
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(t.ex("eval(q, [r0 = [1, 0, 0]], t = 1)[0]")).to_double(), std::cos(1.0),
+                1e-15);
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(t.ex("eval(q, [r0 = [1, 0, 0]], t = 1)[1]")).to_double(), -std::sin(1.0),
+                1e-15);
+    // hyperbolic: the planar part of r'' - r = 0 (|w|^2 = 2), no sqrt(1 - sqrt(2)) left
+    ASSERT_EQ(t.run("R := ode(r'' + [1, 1, 0] x ([1, 1, 0] x r) + r = 0, r(0) = r0, r'(0) = v0)\nrs := solve(R)"), 0)
+        << t.err.str();
+    const std::string rs = print_value(t.val("rs"));
+    EXPECT_NE(rs.find("exp(t)"), std::string::npos) << rs;
+    EXPECT_EQ(rs.find("sqrt"), std::string::npos) << rs;
+    EXPECT_TRUE(t.val("check(R, rs)").as_bool());
+    // a literal with a symbol: Coriolis with w = [0, 0, W], against Boost.Odeint
+    // (tolerance as ClosedFormsAgreeWithNumericalIntegration) and as a scene
+    ASSERT_EQ(t.run("P := ode(r'' + 2*[0, 0, W] x r' = g, r(0) = r0, r'(0) = v0)\np := solve(P)\n"
+                    "vals := [W = 1/2, g = [0, 0, -1], r0 = [0, 0, 0], v0 = [1, 0, 0]]"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(P, p)").as_bool());
+    EXPECT_LT(GiNaC::ex_to<GiNaC::numeric>(t.ex("verify(P, p, vals, 10)")).to_double(), 1e-8);
+    EXPECT_TRUE(t.val("check(P, solve(P, vals), vals)").as_bool());
+    // forcing by a literal next to a literal axis
+    ASSERT_EQ(t.run("F := ode(r'' + 2*[0, 0, 1] x r' + [0, 0, 1] x ([0, 0, 1] x r) + 4*r = [1, 2, 3], "
+                    "r(0) = r0, r'(0) = v0)\nf := solve(F)"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(F, f)").as_bool());
+    EXPECT_LT(GiNaC::ex_to<GiNaC::numeric>(t.ex("verify(F, f, [r0 = [1, 0, 0], v0 = [0, 1, 1]], 10)")).to_double(),
+              1e-8);
+}

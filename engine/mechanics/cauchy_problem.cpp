@@ -284,6 +284,53 @@ operator_form reduce(const cauchy_problem& P) {
         Q.reduced = nullptr;
         return reduce(Q);
     }
+    if (P.is_vector) {
+        // constant literal vectors acting on the unknowns (r' + [0, 0, 1] x r): each is
+        // named by a vector symbol for the derivation, and its components are put back
+        // into the form (the axis, |w|, the data vectors)
+        GiNaC::exmap named, back;
+        for (auto it = P.expression.preorder_begin(); it != P.expression.preorder_end(); ++it) {
+            if (!is_ex_the_function(*it, vcross) && !is_ex_the_function(*it, vdot)) continue;
+            for (int k = 0; k < 2; ++k) {
+                const ex L = it->op(k), other = it->op(1 - k);
+                if (!is_vector_literal(L) || L.has(P.t) || has_any(L, P.unknowns) || !has_any(other, P.unknowns) ||
+                    named.count(L))
+                    continue;
+                const ex w = vector_symbol("literal_vector_" + std::to_string(named.size() + 1));
+                named[L] = w;
+                back[w] = L;
+            }
+        }
+        if (!named.empty()) {
+            cauchy_problem Q = P;
+            Q.expression = P.expression.subs(named, GiNaC::subs_options::no_pattern);
+            Q.reduced = nullptr;
+            operator_form out = reduce(Q);
+            out.axis = out.axis.subs(back, GiNaC::subs_options::no_pattern);
+            for (auto& d : out.data) d.second = d.second.subs(back, GiNaC::subs_options::no_pattern);
+            for (auto& Am : out.ode.A)
+                for (ex& a : Am) a = a.subs(back, GiNaC::subs_options::no_pattern);
+            // a numeric axis has a known |w|: the derivation uses its value (decided
+            // signs: w x (w x r) + r with |w|^2 = 2 is hyperbolic, not cos(sqrt(1 - sqrt(2)) ...))
+            if (GiNaC::is_a<GiNaC::symbol>(out.Omega) && is_vector_literal(out.axis)) {
+                bool numeric = true;
+                for (std::size_t k = 0; k < 3; ++k)
+                    numeric = numeric && GiNaC::is_a<GiNaC::numeric>(out.axis.op(k));
+                if (numeric) {
+                    const ex W = canonical_radicals(norm(out.axis));
+                    if (!W.is_zero()) {
+                        for (auto& Am : out.ode.A)
+                            for (ex& a : Am) a = tidy(a.subs(out.Omega == W));
+                        for (auto& f : out.ode.forcing)
+                            if (f.q.to_ex().has(out.Omega))
+                                f.q = quasi_polynomial::from_ex(tidy(f.q.to_ex().subs(out.Omega == W)), P.t);
+                        out.Omega = W;
+                    }
+                }
+            }
+            return out;
+        }
+    }
     const std::size_t M = P.order();
     if (M == 0) throw domain_error("the equation has no derivative of " + P.name);
     if (P.initial.size() != M)
@@ -374,7 +421,9 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
     const ex norm_w = F.axis.is_zero() ? ex(0) : norm(F.axis);
     auto back = [&](const ex& c) {
         return positive_trig_arguments(
-            normalize_trig_signs(omega_symbol ? simplified_square_roots(c, P.t).subs(F.Omega == norm_w) : c), P.t);
+            normalize_trig_signs(omega_symbol ? simplified_square_roots(c, P.t).subs(S.abbreviations).subs(F.Omega == norm_w)
+                                              : c.subs(S.abbreviations)),
+            P.t);
     };
     ex x = 0;
     for (const placeholder_coefficients& pc : S.terms) {

@@ -67,7 +67,16 @@ ex sqrt_poly(const ex& e) {
     ex out = 1, rest = 1;
     for (const auto& [b, m] : factors_of(f)) {
         if (GiNaC::is_a<GiNaC::numeric>(b)) {
-            out *= GiNaC::sqrt(GiNaC::pow(b, m));
+            // a negative unit stays under the root: which sign factor() gives the
+            // other factors depends on the order of terms (GiNaC hashes, which vary
+            // from run to run), and sqrt(u^2 + v^2) must not become i sqrt(-u^2 - v^2)
+            const ex bm = GiNaC::pow(b, m);
+            if (GiNaC::ex_to<GiNaC::numeric>(bm).is_negative()) {
+                out *= GiNaC::sqrt(-bm);
+                rest *= -1;
+            } else {
+                out *= GiNaC::sqrt(bm);
+            }
             continue;
         }
         out *= GiNaC::pow(b, m / 2);
@@ -119,8 +128,10 @@ bool has_radical(const ex& e) {
 int discriminant_sign(const ex& disc) {
     const int s = sign_of(disc);
     if (s != 2) return s;
-    if (!has_radical(exact_sqrt(-disc))) return -1;
-    if (!has_radical(exact_sqrt(disc))) return 1;
+    // a root free of radicals and of I: -disc (or disc) is a square of a real expression
+    const auto is_square = [](const ex& r) { return !has_radical(r) && !r.has(GiNaC::I); };
+    if (is_square(exact_sqrt(-disc))) return -1;
+    if (is_square(exact_sqrt(disc))) return 1;
     return 2;
 }
 
@@ -156,7 +167,7 @@ quasi_polynomial nth_derivative(quasi_polynomial q, unsigned n) {
 
 }  // namespace
 
-std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a) {
+std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a, GiNaC::exmap* abbreviations) {
     if (a.empty() || is_zero_cex(a.back()))
         throw domain_error("characteristic polynomial " + poly_text(a) +
                            ": the leading coefficient is zero");
@@ -167,18 +178,58 @@ std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a)
     // formula over C (s^2 + 2 i |w| s + w0^2 of VI.2.93 has the roots
     // i(-|w| +- sqrt(|w|^2 + w0^2)), which p conj(p), irreducible of degree 4, hides)
     int quadratic_sign = 2;
-    cex D;
+    bool complex_quadratic = false;  // complex coefficients: the quadratic formula over C
+    cex D, sq;
+    bool abbreviated = false;  // sq holds symbols: the two roots are distinct by assumption
     if (M == 2) {
         D = tidy_cex(a[1] * a[1] - cex(ex(4), ex(0)) * a[2] * a[0]);
-        if (is_zero_scalar(D.im)) quadratic_sign = discriminant_sign(D.re);
+        complex_quadratic = !is_zero_scalar(a[1].im) || !is_zero_scalar(a[2].im) || !is_zero_scalar(a[0].im);
+        if (is_zero_scalar(D.im)) {
+            quadratic_sign = discriminant_sign(D.re);
+            // a real discriminant of unknown sign: sqrt(D) = i sqrt(-D); the impulse
+            // response is even in sqrt(D), hence analytic in D, so the form holds for
+            // either sign (cos(i x) = cosh(x)); the double root D = 0 is excluded
+            if (quadratic_sign == 2 && complex_quadratic) sq = cex(ex(0), exact_sqrt(-D.re));
+        } else {
+            // a complex discriminant D = u + i v, v != 0 (the damped Foucault pendulum
+            // s^2 + (c + 2 i |w|) s + w0^2): sqrt(D) = p + i q with
+            //   q = sqrt((|D| - u)/2), p = v/(2 q)   or   p = sqrt((|D| + u)/2), q = v/(2 p),
+            // |D| = sqrt(u^2 + v^2); both hold for v != 0 (p q = v/2, p^2 - q^2 = u).
+            // The second where u > 0 is known, the first otherwise (it stays regular
+            // as v -> 0 with u < 0, the weakly damped oscillator).
+            const ex u = D.re, v = D.im, modulus = exact_sqrt(tidy(u * u + v * v));
+            ex p, q;
+            if (discriminant_sign(u) == 1) {
+                p = exact_sqrt(tidy((modulus + u) / 2));
+                q = tidy(v / (2 * p));
+            } else {
+                q = exact_sqrt(tidy((modulus - u) / 2));
+                p = tidy(v / (2 * q));
+            }
+            if (abbreviations) {
+                // written once: the coefficients stay rational in p and q
+                const GiNaC::realsymbol ps("p"), qs("q");
+                (*abbreviations)[ps] = p;
+                (*abbreviations)[qs] = q;
+                sq = cex(ps, qs);
+                abbreviated = true;
+            } else {
+                sq = cex(p, q);
+            }
+        }
     }
     if (M == 1) {
         candidates.push_back(-1 * (a[0] * inverse_cex(a[1], "a characteristic root")));
-    } else if (quadratic_sign != 2) {
-        const cex sq = quadratic_sign >= 0 ? cex(exact_sqrt(D.re), ex(0)) : cex(ex(0), exact_sqrt(-D.re));
+    } else if (M == 2 && (!sq.re.is_zero() || !sq.im.is_zero())) {
         const cex inv2a = inverse_cex(cex(2 * a[2].re, 2 * a[2].im), "a characteristic root");
         candidates.push_back(tidy_cex((sq - a[1]) * inv2a));
-        if (quadratic_sign != 0) candidates.push_back(tidy_cex((cex(ex(0), ex(0)) - sq - a[1]) * inv2a));
+        candidates.push_back(tidy_cex((cex(ex(0), ex(0)) - sq - a[1]) * inv2a));
+        if (abbreviated) return {{candidates[0], 1}, {candidates[1], 1}};
+    } else if (quadratic_sign != 2) {
+        const cex real_sq = quadratic_sign >= 0 ? cex(exact_sqrt(D.re), ex(0)) : cex(ex(0), exact_sqrt(-D.re));
+        const cex inv2a = inverse_cex(cex(2 * a[2].re, 2 * a[2].im), "a characteristic root");
+        candidates.push_back(tidy_cex((real_sq - a[1]) * inv2a));
+        if (quadratic_sign != 0) candidates.push_back(tidy_cex((cex(ex(0), ex(0)) - real_sq - a[1]) * inv2a));
     } else {
         const GiNaC::symbol s("s");
         ex Pr = 0, Pi = 0;
@@ -260,8 +311,8 @@ std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a)
     return roots;
 }
 
-quasi_polynomial impulse_response(const std::vector<cex>& a, const ex& t) {
-    const std::vector<characteristic_root> roots = characteristic_roots(a);
+quasi_polynomial impulse_response(const std::vector<cex>& a, const ex& t, GiNaC::exmap* abbreviations) {
+    const std::vector<characteristic_root> roots = characteristic_roots(a, abbreviations);
     const std::size_t M = a.size() - 1;
     struct basis_fn { cex z; unsigned j; };
     std::vector<basis_fn> basis;
@@ -313,7 +364,7 @@ const placeholder_coefficients& operator_solution::of(const std::string& name) c
 
 ex operator_solution::coefficient(const std::string& name, unsigned k) const {
     if (k > 2) throw domain_error("operator solution: coefficient index " + std::to_string(k) + " > 2");
-    return of(name).c[k].to_ex();
+    return of(name).c[k].to_ex().subs(abbreviations);
 }
 
 namespace {
@@ -397,7 +448,7 @@ operator_solution solve(const operator_ode& ode, const rotation_operator_algebra
                             "(K) is a zero divisor in the algebra of K = w x (its value at K = 0 is "
                             "0), so x^(" + std::to_string(M) + ") cannot be solved for");
     // the degenerate algebra solves every placeholder from the axial impulse response
-    const quasi_polynomial y0 = need_axial || R.degenerate() ? impulse_response(a0, t) : zero;
+    const quasi_polynomial y0 = need_axial || R.degenerate() ? impulse_response(a0, t, &acc.sol.abbreviations) : zero;
 
     if (!R.degenerate()) {
         std::vector<cex> a1(M + 1);
@@ -406,7 +457,7 @@ operator_solution solve(const operator_ode& ode, const rotation_operator_algebra
             throw algebra_error("operator ODE: the leading coefficient A_" + std::to_string(M) +
                                 "(K) is a zero divisor in the algebra of K = w x (it vanishes at K = i|w|)"
                                 ", so x^(" + std::to_string(M) + ") cannot be solved for");
-        const quasi_polynomial y1 = need_planar ? impulse_response(a1, t) : zero;
+        const quasi_polynomial y1 = need_planar ? impulse_response(a1, t, &acc.sol.abbreviations) : zero;
         for (std::size_t i = 0; i < M; ++i) {
             const cyclic_factors m = factors_of_name(ode.initial[i]);
             if (!m.axial && !m.planar) continue;
@@ -497,7 +548,8 @@ verification verify(const operator_ode& ode, const rotation_operator_algebra& R,
     };
     for (const auto& p : sol.terms) {
         const cyclic_factors mp = factors_of_name(p.vector);
-        const element G = R.make(p.c[0].to_ex(), p.c[1].to_ex(), p.c[2].to_ex());
+        const element G = R.make(sol.coefficient(p.vector, 0), sol.coefficient(p.vector, 1),
+                                 sol.coefficient(p.vector, 2));
         element lhs = R.make(0, 0, 0);
         for (std::size_t m = 0; m <= M; ++m) {
             const element Gm = G.map_coeffs([&](const ex& x) { return GiNaC::diff(x, t, int(m)); });

@@ -87,10 +87,15 @@ struct operator_solution {
     /// One entry per placeholder: initial data first (in order), then forcing vectors
     /// in order of first appearance. A name used twice is one entry.
     std::vector<placeholder_coefficients> terms;
+    /// Real symbols in `terms` that stand for parts of characteristic roots written
+    /// once (p, q of sqrt(D) = p + i q for a complex discriminant D), with their
+    /// values: the coefficients stay rational in them; coefficient(), verify() and
+    /// vector_solution() put the values in.
+    GiNaC::exmap abbreviations;
 
     /// The coefficients of placeholder `name`; throws domain_error if absent.
     const placeholder_coefficients& of(const std::string& name) const;
-    /// c_{name,k}(t) as an expression (k = 0, 1, 2).
+    /// c_{name,k}(t) as an expression (k = 0, 1, 2), abbreviations put in.
     GiNaC::ex coefficient(const std::string& name, unsigned k) const;
 };
 
@@ -99,11 +104,17 @@ struct characteristic_root {
     cex z;
     unsigned multiplicity;
 };
-std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a);
+/// A quadratic with a complex discriminant D = u + i v has the roots
+/// (-a1 +- (p + i q))/(2 a2), p and q nested radicals of u and v; with
+/// `abbreviations`, p and q are new real symbols whose values it receives
+/// (the roots are then taken as distinct: v != 0, the generic reading).
+std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a,
+                                                      GiNaC::exmap* abbreviations = nullptr);
 
 /// The impulse response y of sum_m a[m] y^{(m)} = 0: y^{(i)}(0) = 0 for i < M-1,
-/// y^{(M-1)}(0) = 1/a[M]. Complex-valued in general.
-quasi_polynomial impulse_response(const std::vector<cex>& a, const GiNaC::ex& t);
+/// y^{(M-1)}(0) = 1/a[M]. Complex-valued in general. `abbreviations` as above.
+quasi_polynomial impulse_response(const std::vector<cex>& a, const GiNaC::ex& t,
+                                  GiNaC::exmap* abbreviations = nullptr);
 
 /// Solves the problem above for |w| = R.omega(). Throws domain_error for malformed
 /// input (order 0, wrong number of initial names, t in a coefficient),

@@ -49,17 +49,22 @@ bool has_related_exponentials(const GiNaC::ex& e);
 GiNaC::ex trig_exponential_form(const GiNaC::ex& e);
 
 /// e with each odd power sqrt(b)^k of a non-numeric b written q_b^k, q_b a real
-/// symbol per base (`roots`: base and symbol, in order of appearance).
+/// symbol per base (`roots`: base and symbol, in order of appearance: a root
+/// comes after the roots inside its base). With `rational_bases`, square roots of
+/// rational numbers (sqrt(5) inside sqrt(3 + sqrt(5))) become symbols too.
 struct square_roots_as_symbols {
     GiNaC::ex e;
     std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> roots;
 };
-square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e);
+square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e, bool rational_bases = false);
 
 /// Zero test of a rational function of symbols and square roots of non-numeric
 /// expressions: each sqrt(b) becomes a symbol q_b, and the numerator is reduced
 /// modulo q_b^2 - b (normal() alone treats sqrt(b) as an unrelated atom, so that
-/// sqrt(b)^2 - b would not cancel once it is split over a fraction).
+/// sqrt(b)^2 - b would not cancel once it is split over a fraction). Nested roots
+/// (sqrt((sqrt(u^2 + v^2) - u)/2) of a complex quadratic's roots) are reduced
+/// outermost first, with square roots of rational numbers as symbols too.
+/// True only when the reduced numerator is 0 (a proof); false is "not proved".
 bool is_zero_modulo_square_roots(const GiNaC::ex& e);
 
 /// True when e contains b^(k/2), k odd, with b not a number.

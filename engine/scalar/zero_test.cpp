@@ -163,13 +163,15 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
     return f(e);
 }
 
-square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e) {
+square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e, bool rational_bases) {
     struct roots : GiNaC::map_function {
+        bool rational = false;
         std::vector<std::pair<GiNaC::ex, GiNaC::realsymbol>> q;  // base, symbol (a real root)
         GiNaC::ex operator()(const GiNaC::ex& x) override {
             const GiNaC::ex y = x.map(*this);
-            if (!GiNaC::is_a<GiNaC::power>(y) || GiNaC::is_a<GiNaC::numeric>(y.op(0)) ||
-                !GiNaC::is_a<GiNaC::numeric>(y.op(1)))
+            if (!GiNaC::is_a<GiNaC::power>(y) || !GiNaC::is_a<GiNaC::numeric>(y.op(1))) return y;
+            if (GiNaC::is_a<GiNaC::numeric>(y.op(0)) &&
+                !(rational && GiNaC::ex_to<GiNaC::numeric>(y.op(0)).is_rational()))
                 return y;
             const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(y.op(1)) * 2;
             if (!k.is_integer() || k.is_even()) return y;
@@ -179,14 +181,15 @@ square_roots_as_symbols with_square_roots_as_symbols(const GiNaC::ex& e) {
             return GiNaC::pow(q.back().second, k);
         }
     } r;
+    r.rational = rational_bases;
     const GiNaC::ex z = r(e);
     return {z, r.q};
 }
 
-bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
-    const square_roots_as_symbols r = with_square_roots_as_symbols(e);
-    const GiNaC::ex& z = r.e;
-    if (r.roots.empty()) return false;
+namespace {
+
+/// z (with the roots of r as symbols) is 0 modulo q_b^2 - b: true is a proof.
+bool zero_modulo_roots(const square_roots_as_symbols& r, const GiNaC::ex& z) {
     try {
         const GiNaC::ex n = GiNaC::expand(GiNaC::numer(GiNaC::normal(z)));
         // complex coefficients (I): the real and the imaginary part vanish separately
@@ -195,7 +198,10 @@ bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
         for (GiNaC::ex part : parts) {
             GiNaC::exmap atoms;  // functions and other non-polynomial parts as symbols
             part = GiNaC::expand(part).to_polynomial(atoms);
-            for (const auto& [b, s] : r.roots) {
+            // outermost first: a root's base holds only roots found before it
+            for (auto it = r.roots.rbegin(); it != r.roots.rend(); ++it) {
+                const auto& [b, s] = *it;
+                if (!part.has(s)) continue;
                 // s^2 = N/D: the base may be a fraction (q^2 |B|^2/m^2 + ...), whose 1/m
                 // to_polynomial would make an unrelated atom; N and D are made polynomials
                 // apart, and the remainder has coefficients in the fractions of the rest
@@ -203,6 +209,8 @@ bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
                 const GiNaC::ex base = nd.op(1).is_equal(1) ? b.to_polynomial(atoms)
                                                             : nd.op(0).to_polynomial(atoms) / nd.op(1).to_polynomial(atoms);
                 part = GiNaC::expand(GiNaC::rem(part, GiNaC::pow(s, 2) - base, s, false));
+                // D may hold inner roots: their reduction needs a polynomial (D != 0)
+                if (!nd.op(1).is_equal(1)) part = GiNaC::expand(GiNaC::numer(GiNaC::normal(part)));
             }
             if (!GiNaC::normal(part).is_zero()) return false;
         }
@@ -210,6 +218,48 @@ bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
     } catch (const std::exception&) {
         return false;  // not decided: not proved zero
     }
+}
+
+bool is_function_factor(const GiNaC::ex& f) {
+    return GiNaC::is_a<GiNaC::function>(f) || (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::function>(f.op(0)));
+}
+
+/// The terms of the sum e grouped by their product of function factors (exp, sin,
+/// cos, ... : the functions of t of a residual), the coefficients summed.
+std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> by_function_factors(const GiNaC::ex& e) {
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> groups;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        GiNaC::ex F = 1, c = 1;
+        for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
+            const GiNaC::ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+            (is_function_factor(f) ? F : c) *= f;
+        }
+        groups[F] += c;
+    }
+    return groups;
+}
+
+}  // namespace
+
+bool is_zero_modulo_square_roots(const GiNaC::ex& e) {
+    const square_roots_as_symbols r = with_square_roots_as_symbols(e, true);
+    if (r.roots.empty()) return false;
+    // c_1 F_1 + c_2 F_2 + ..., F_k products of functions (the exp, sin, cos of t
+    // of a residual): 0 when every c_k is; each is far smaller than the whole, whose
+    // normal() spends its time in gcds over all the atoms at once
+    const GiNaC::ex ez = GiNaC::expand(r.e);
+    const auto groups = by_function_factors(ez);
+    if (groups.size() > 1) {
+        bool all = true;
+        for (const auto& [F, c] : groups)
+            if (!zero_modulo_roots(r, c)) {
+                all = false;
+                break;
+            }
+        if (all) return true;
+    }
+    return zero_modulo_roots(r, ez);
 }
 
 bool has_symbolic_square_root(const GiNaC::ex& e) {
