@@ -2,6 +2,9 @@
 // Theorem III.4.1 (generators, power basis III.4.4, Wronskian form III.4.2-4).
 #include <gtest/gtest.h>
 
+#include <array>
+#include <complex>
+
 #include "test_util.h"
 
 #include "algebra/polynomial_algebra.h"
@@ -221,4 +224,69 @@ TEST(TheoremIII41, DenseNonPolynomial) {
     EXPECT_EQ(s.status, generator_search::verdict::not_polynomial) << s.reason;
     EXPECT_NE(s.reason.find("N/N^2 is not a cyclic"), std::string::npos) << s.reason;
     EXPECT_EQ(nilradical(*A).size(), 2u);
+}
+
+// Issue 13 (4.4): exp and log of an element whose minimal polynomial is an
+// irreducible cubic (main: "degree 3 > 2 has no closed form"). Cardano's roots,
+// one real and a complex pair, or three real ones (casus irreducibilis, in
+// cosines), with Lagrange's interpolation. exp is checked against the
+// exponential series summed exactly in the algebra: 60 terms of exp(v/2) with
+// |v| <= 2 leave a tail below 1e-60, so the two agree to the 40 digits
+// evaluated (tolerance 1e-30 leaves ten for rounding in evalf).
+TEST(PolynomialAlgebra, ExpWithAnIrreducibleCubicMinimalPolynomial) {
+    const GiNaC::symbol X("X");
+    const long digits = GiNaC::Digits;
+    GiNaC::Digits = 40;
+    for (const ex& p : {GiNaC::pow(X, 3) - 2, GiNaC::pow(X, 3) - 3 * X + 1, GiNaC::pow(X, 3) + X + 1,
+                        GiNaC::pow(X, 3) - X * X / 2 + 3 * X - ex(1) / 3}) {
+        auto P = polynomial_algebra::make(p, X);
+        const coeffs half{0, ex(1) / 2, 0};  // v/2, v the class of X
+        const coeffs e = P->exp(half, 1);
+        coeffs series{0, 0, 0}, term{1, 0, 0};
+        for (int k = 0; k < 60; ++k) {
+            for (int i = 0; i < 3; ++i) series[i] += term[i];
+            term = P->multiply(term, half);
+            for (auto& x : term) x = x / (k + 1);
+        }
+        for (int i = 0; i < 3; ++i) {
+            const ex d = GiNaC::evalf(e[i] - series[i]);
+            ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(d)) << P->name() << " " << i << ": " << e[i];
+            EXPECT_LT(GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(d)), GiNaC::pow(GiNaC::numeric(10), -30))
+                << P->name() << " " << i << ": " << e[i];
+        }
+    }
+    GiNaC::Digits = digits;
+}
+
+// log(v) for the cubics whose real roots are positive: the interpolating
+// polynomial L = c0 + c1 X + c2 X^2 takes the principal log at every root z of p
+// (II.1.12). The roots from Eigen's eigenvalues of the companion matrix (double:
+// 1e-12 absolute leaves three orders for their conditioning).
+TEST(PolynomialAlgebra, LogWithAnIrreducibleCubicMinimalPolynomial) {
+    const GiNaC::symbol X("X");
+    for (const ex& p : {GiNaC::pow(X, 3) - 2, GiNaC::pow(X, 3) - X * X / 2 + 3 * X - ex(1) / 3}) {
+        auto P = polynomial_algebra::make(p, X);
+        const coeffs l = P->log({0, 1, 0});
+        std::array<double, 3> c{}, q{};
+        for (int i = 0; i < 3; ++i) {
+            c[i] = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(l[i])).to_double();
+            q[i] = GiNaC::ex_to<GiNaC::numeric>(GiNaC::expand(p).coeff(X, i)).to_double();
+        }
+        // the roots of X^3 + q2 X^2 + q1 X + q0 (Durand-Kerner in long double)
+        std::array<std::complex<long double>, 3> z{std::complex<long double>(0.4L, 0.9L)};
+        for (int i = 1; i < 3; ++i) z[i] = z[i - 1] * z[0];
+        for (int it = 0; it < 500; ++it)
+            for (int i = 0; i < 3; ++i) {
+                std::complex<long double> num = ((z[i] + (long double)q[2]) * z[i] + (long double)q[1]) * z[i] + (long double)q[0],
+                                          den = 1;
+                for (int j = 0; j < 3; ++j)
+                    if (j != i) den *= z[i] - z[j];
+                z[i] -= num / den;
+            }
+        for (const auto& zi : z) {
+            const std::complex<long double> Lz = (long double)c[0] + ((long double)c[1] + (long double)c[2] * zi) * zi;
+            EXPECT_NEAR(double(Lz.real()), double(std::log(zi).real()), 1e-12) << P->name() << " at " << double(zi.real());
+            EXPECT_NEAR(double(Lz.imag()), double(std::log(zi).imag()), 1e-12) << P->name() << " at " << double(zi.real());
+        }
+    }
 }

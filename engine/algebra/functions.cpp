@@ -89,6 +89,44 @@ ex atomize(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap&
     return s;
 }
 
+// The roots of an irreducible monic cubic f = X^3 + a X^2 + b X + c (Cardano).
+// With X = y - a/3 it is y^3 + p y + q, of discriminant -(4 p^3 + 27 q^2):
+// * negative: one real root y1 = u - p/(3 u), u the real cube root of
+//   -q/2 - sign(q) sqrt(q^2/4 + p^3/27) (the side without cancellation, u != 0),
+//   and the pair of y^2 + y1 y + y1^2 + p: -y1/2 +- i sqrt(3 y1^2 + 4 p)/2;
+// * positive (three real roots, casus irreducibilis; then p < 0):
+//   y_k = 2 sqrt(-p/3) cos(theta/3 - 2 pi k/3), theta = acos(3 q/(2 p) sqrt(-3/p)).
+// An undecidable sign (of the discriminant, or of q) is refused like a quadratic's.
+std::vector<root> cubic_roots(const ex& f, const GiNaC::symbol& X, unsigned m, const std::string& where) {
+    const ex a = f.coeff(X, 2), b = f.coeff(X, 1), c = f.coeff(X, 0);
+    const ex p = tidy(b - a * a / 3), q = tidy(2 * a * a * a / 27 - a * b / 3 + c), shift = tidy(-a / 3);
+    const ex disc = tidy(-(4 * p * p * p + 27 * q * q));
+    const int sd = sign_of(disc);
+    auto undecided = [&](const ex& what, const char* name) {
+        return closed_form_error(where + ": the sign of the " + name + " " + str(what) + " of the cubic factor " +
+                                 str(f) + " of the minimal polynomial cannot be decided, so Cardano's form of "
+                                 "its roots cannot be chosen");
+    };
+    if (sd == 2) throw undecided(disc, "discriminant");
+    if (sd < 0) {
+        const int sq = q.is_zero() ? -1 : sign_of(q);
+        if (sq == 2) throw undecided(q, "constant term of the depressed cubic");
+        // u^3 = -q/2 - sign(q) sqrt(D0): |u|^3 = |q|/2 + sqrt(D0) > 0, sign(u) = -sign(q)
+        const ex D0 = tidy(q * q / 4 + p * p * p / 27);
+        const ex u = (sq > 0 ? -1 : 1) * GiNaC::pow(tidy(GiNaC::abs(q) / 2 + GiNaC::sqrt(D0)), GiNaC::numeric(1, 3));
+        const ex y1 = tidy(canonical_radicals(u - p / (3 * u)));
+        const ex im = tidy(canonical_radicals(GiNaC::sqrt(tidy(3 * y1 * y1 + 4 * p)) / 2));
+        return {{tidy(y1 + shift), ex(0), m, f}, {tidy(-y1 / 2 + shift), im, m, f}};
+    }
+    // three distinct real roots (disc = 0 would make f reducible over Q)
+    const ex r = 2 * GiNaC::sqrt(tidy(-p / 3));
+    const ex theta = GiNaC::acos(tidy(3 * q / (2 * p) * GiNaC::sqrt(tidy(-3 / p))));
+    std::vector<root> out;
+    for (int k = 0; k < 3; ++k)
+        out.push_back({tidy(r * GiNaC::cos(theta / 3 - 2 * k * GiNaC::Pi / 3) + shift), ex(0), m, f});
+    return out;
+}
+
 // The roots of q (monic in X) with multiplicities, from its factorization over Q.
 std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::string& where) {
     // Non-polynomial atoms of the coefficients (log(2), Pi, sqrt(2), exp(t) ...)
@@ -141,6 +179,8 @@ std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::strin
                                             " of the minimal polynomial cannot be decided, so its "
                                             "roots are neither known real nor known complex");
             }
+        } else if (d == 3) {
+            for (const root& r : cubic_roots(f, X, m, where)) roots.push_back(r);
         } else {
             throw closed_form_error(where + ": the minimal polynomial " + str(q) +
                                     " has the irreducible factor " + str(f) + " of degree " +
@@ -168,6 +208,48 @@ coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const 
     const int N = q.degree(X);
     const std::string where = f.name + " in " + name();
     const std::vector<root> roots = roots_of(q, X, where);
+    bool cubic = false, simple = true;
+    for (const root& r : roots) {
+        cubic = cubic || r.factor.degree(X) == 3;
+        simple = simple && r.mult == 1;
+    }
+    if (cubic && simple) {
+        // (II.1.12) with simple roots, Lagrange's form: p(X) = sum_z f(z) (q(X)/(X - z))/q'(z),
+        // a pair a +- i b once as 2 Re. Each term stays as small as its root (Cardano's
+        // radicals, cos(theta/3 - 2 pi k/3)), where the general linear system mixes them all.
+        std::vector<ex> qc(N + 1);
+        for (int k = 0; k <= N; ++k) qc[k] = q.coeff(X, k);
+        std::vector<ex> c(N, ex(0));
+        for (const root& r : roots) {
+            const cplx<ex> z(r.re, r.im);
+            // b_{N-1} = 1, b_{k-1} = q_k + z b_k (synthetic division); q'(z) by Horner
+            std::vector<cplx<ex>> bq(N, cplx<ex>(ex(0), ex(0)));
+            bq[N - 1] = cplx<ex>(ex(1), ex(0));
+            for (int k = N - 1; k > 0; --k) {
+                const cplx<ex> nb = z * bq[k] + cplx<ex>(qc[k], ex(0));
+                bq[k - 1] = cplx<ex>(tidy(nb.re), tidy(nb.im));
+            }
+            cplx<ex> dq(ex(0), ex(0));
+            for (int k = N; k >= 1; --k) {
+                const cplx<ex> nd = dq * z + cplx<ex>(ex(k) * qc[k], ex(0));
+                dq = cplx<ex>(tidy(nd.re), tidy(nd.im));
+            }
+            ex fre, fim;
+            f.value(r.re, r.im, 0, fre, fim);
+            // f(z)/q'(z)
+            const ex den = tidy(dq.re * dq.re + dq.im * dq.im);
+            const cplx<ex> w0(tidy((fre * dq.re + fim * dq.im) / den), tidy((fim * dq.re - fre * dq.im) / den));
+            for (int k = 0; k < N; ++k) {
+                const cplx<ex> term = w0 * bq[k];
+                c[k] += r.im.is_zero() ? term.re : 2 * term.re;
+            }
+        }
+        ex p = 0;
+        for (int k = 0; k < N; ++k) p += tidy(c[k]) * GiNaC::pow(X, k);
+        coeffs out = evaluate_polynomial(p, X, w);
+        for (auto& x : out) x = tidy(x);
+        return out;
+    }
     // conditions: rows of A (coefficients of c_0..c_{N-1}) and right-hand sides
     std::vector<std::vector<ex>> A;
     std::vector<ex> b;
