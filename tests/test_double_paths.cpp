@@ -42,8 +42,10 @@
 #include "algebra/walsh_complex.h"
 #include "algebra/walsh_double.h"
 #include "core/error.h"
+#include "test_util.h"
 
 using namespace symrep;
+using symrep::test::what_of;
 using vec = std::vector<double>;
 using cvec = std::vector<std::complex<double>>;
 
@@ -386,4 +388,59 @@ TEST(DoublePaths, ComponentsVsDirectHadamardN1to10) {
         EXPECT_LT(max_abs_diff(C.from_components(y), w), tw);
         EXPECT_LT(max_abs_diff(M.from_idempotent_components(c), w), tw);
     }
+}
+
+// Issue 13 (4.6): float elements of the exact multicomplex algebra take the double
+// path, and multicomplex(n) for 10 < n <= max_order() is double-precision only.
+// Tolerances: one FWHT and a componentwise operation on components of modulus
+// O(1) (tol_fast above, about 64 (n + 1) eps), so 1e-12 relative for n <= 11.
+TEST(DoublePathsIssue13, FloatElementsTakeTheDoublePath) {
+    using symrep::multicomplex;
+    const auto A = multicomplex::make(1);
+    const coeffs xf{GiNaC::numeric(1.5), 2, 3, 4}, xe{GiNaC::numeric(3, 2), 2, 3, 4};
+    const coeffs ef = A->exp(xf, 1), ee = A->exp(xe, 1);
+    for (std::size_t k = 0; k < 4; ++k) {
+        ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(ef[k])) << ef[k];  // numbers, not cos(1), sin(5) ...
+        EXPECT_FALSE(GiNaC::ex_to<GiNaC::numeric>(ef[k]).is_rational()) << ef[k];
+        const double want = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(ee[k])).to_double();
+        EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(ef[k]).to_double(), want, 1e-12 * std::abs(want)) << k;
+    }
+    // exact coordinates stay exact
+    EXPECT_TRUE(GiNaC::ex_to<GiNaC::numeric>(A->multiply(xe, xe)[0]).is_rational());
+
+    const unsigned n = 11;
+    ASSERT_LE(n, multicomplex_d::max_order());
+    const auto B = multicomplex::make(n);
+    EXPECT_FALSE(B->exact());
+    coeffs z = B->zero();
+    z[0] = GiNaC::numeric(1.5);
+    z[B->dim() / 2] = 1;  // i0
+    z[1] = GiNaC::numeric(0.25);  // i11
+    const coeffs u = B->inverse(z), one = B->multiply(u, z);
+    for (std::size_t k = 0; k < B->dim(); ++k)
+        EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(one[k]).to_double(), k == 0 ? 1.0 : 0.0, 1e-12) << k;
+    // exp(z) = exp(i0) exp(1.5 + 0.25 i11), each by the double path
+    coeffs i0 = B->zero(), rest = z;
+    i0[B->dim() / 2] = GiNaC::numeric(1.0);
+    rest[B->dim() / 2] = 0;
+    const coeffs lhs = B->exp(z, 1), rhs = B->multiply(B->exp(i0, 1), B->exp(rest, 1));
+    for (std::size_t k = 0; k < B->dim(); ++k)
+        EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(lhs[k]).to_double(), GiNaC::ex_to<GiNaC::numeric>(rhs[k]).to_double(),
+                    1e-12 * 8)
+            << k;  // |exp(z)| <= e^1.75 < 8
+    // 1 + i0 i1 is a zero divisor (III.1.55): ranks found, the inverse refused
+    coeffs zd = B->zero();
+    zd[0] = GiNaC::numeric(1.0);
+    zd[(B->dim() / 2) | (B->dim() / 4)] = 1;
+    EXPECT_FALSE(B->zero_divisor_ranks(zd).empty());
+    EXPECT_THROW(B->inverse(zd), zero_divisor_error);
+    // the exact-only operations and symbolic coordinates are refused by name
+    const GiNaC::symbol X("X"), a("a");
+    const std::string m = what_of([&] { B->minpoly(z, X); });
+    EXPECT_NE(m.find("n <= 10"), std::string::npos) << m;
+    coeffs za = z;
+    za[2] = a;
+    const std::string ms = what_of([&] { B->exp(za, 1); });
+    EXPECT_NE(ms.find("symbolic coordinates"), std::string::npos) << ms;
+    EXPECT_THROW(multicomplex::make(multicomplex_d::max_order() + 1), size_error);
 }

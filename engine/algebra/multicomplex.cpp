@@ -45,13 +45,61 @@ ex expanded_product(std::vector<ex> f) {
 }  // namespace
 
 std::shared_ptr<const multicomplex> multicomplex::make(unsigned n) {
-    if (n > max_order)
+    if (n > multicomplex_d::max_order())
         throw size_error("multicomplex(" + std::to_string(n) +
                          "): the exact multicomplex algebra is limited to n <= " +
                          std::to_string(max_order) + " (dimension 2^" + std::to_string(max_order + 1) +
-                         "); the double-precision path reaches n <= " +
+                         ") and the double-precision path to n <= " +
                          std::to_string(multicomplex_d::max_order()) + " on this machine");
     return std::shared_ptr<const multicomplex>(new multicomplex(n));
+}
+
+namespace {
+
+bool is_real_number(const ex& x) {
+    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real();
+}
+bool is_float(const ex& x) { return is_real_number(x) && !GiNaC::ex_to<GiNaC::numeric>(x).is_rational(); }
+
+std::vector<double> to_doubles(const coeffs& c) {
+    std::vector<double> v(c.size());
+    for (std::size_t k = 0; k < c.size(); ++k) v[k] = GiNaC::ex_to<GiNaC::numeric>(c[k]).to_double();
+    return v;
+}
+
+coeffs from_doubles(const std::vector<double>& v) {
+    coeffs c(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) c[k] = v[k] == 0 ? ex(0) : ex(GiNaC::numeric(v[k]));
+    return c;
+}
+
+}  // namespace
+
+void multicomplex::require_exact(const char* what) const {
+    if (!exact())
+        throw size_error(std::string(what) + " in " + name() + ": the exact multicomplex algebra is limited to n <= " +
+                         std::to_string(max_order) + "; above it " + name() +
+                         " computes in double precision only (products, inverse, exp, log, zero divisors "
+                         "of elements with numeric coordinates)");
+}
+
+bool multicomplex::double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
+    bool numeric = true, any_float = false;
+    for (const coeffs* c : operands)
+        for (const ex& x : *c) {
+            numeric = numeric && is_real_number(x);
+            any_float = any_float || is_float(x);
+        }
+    if (!exact() && !numeric)
+        throw size_error(std::string(what) + " in " + name() + ": an element with symbolic coordinates needs the "
+                         "exact multicomplex algebra, which is limited to n <= " + std::to_string(max_order) +
+                         "; above it the coordinates must be numbers (double precision)");
+    return numeric && (any_float || !exact());
+}
+
+GiNaC::matrix multicomplex::canonical_matrix(const coeffs& w) const {
+    require_exact("canonical matrix");
+    return algebra::canonical_matrix(w);
 }
 
 std::string multicomplex::name() const { return "multicomplex(" + std::to_string(n_) + ")"; }
@@ -89,6 +137,7 @@ coeffs multicomplex::from_component_pairs(const std::vector<cplx<ex>>& c) const 
 coeffs multicomplex::multiply(const coeffs& a, const coeffs& b) const {
     check_size(a, "product");
     check_size(b, "product");
+    if (double_path({&a, &b}, "product")) return from_doubles(multicomplex_d(n_).multiply(to_doubles(a), to_doubles(b)));
     auto ca = multicomplex_components<ex>(a, n_);
     const auto cb = multicomplex_components<ex>(b, n_);
     for (std::size_t p = 0; p < ca.size(); ++p) ca[p] = ca[p] * cb[p];
@@ -160,6 +209,7 @@ coeffs multicomplex::from_idempotent_components(const std::vector<ex>& c) const 
 
 // (III.1.54) det [w] = prod_p r_p^2.
 ex multicomplex::determinant(const coeffs& w) const {
+    require_exact("determinant");
     std::vector<ex> f;
     for (const auto& z : component_pairs(w)) f.push_back(tidy(z.norm2()));
     return tidy(expanded_product(std::move(f)));
@@ -167,6 +217,7 @@ ex multicomplex::determinant(const coeffs& w) const {
 
 // (III.1.59) the characteristic polynomial.
 ex multicomplex::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
+    require_exact("characteristic polynomial");
     std::vector<ex> f;
     for (const auto& z : component_pairs(w))
         f.push_back(GiNaC::pow(X, 2) - 2 * z.re * X + tidy(z.norm2()));
@@ -175,6 +226,7 @@ ex multicomplex::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
 
 // (III.1.59-60, corrected): lcm of the real minimal polynomials of the components.
 ex multicomplex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
+    require_exact("minimal polynomial");
     struct factor { ex a, b2; bool linear; };
     std::vector<factor> distinct;
     for (const auto& z : component_pairs(w)) {
@@ -193,6 +245,9 @@ ex multicomplex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
 
 // (III.1.55)
 std::vector<std::size_t> multicomplex::zero_divisor_ranks(const coeffs& w) const {
+    check_size(w, "zero divisor ranks");
+    // (III.1.55) in doubles: |c_p| <= 1e-12 max |c_q| (multicomplex_d::default_rel_tol)
+    if (double_path({&w}, "zero divisor ranks")) return multicomplex_d(n_).zero_divisor_ranks(to_doubles(w));
     std::vector<std::size_t> r;
     const auto c = component_pairs(w);
     for (std::size_t p = 0; p < c.size(); ++p)
@@ -214,6 +269,8 @@ namespace {
 
 // (III.1.57)
 coeffs multicomplex::inverse(const coeffs& w) const {
+    check_size(w, "inverse");
+    if (double_path({&w}, "inverse")) return from_doubles(multicomplex_d(n_).inverse(to_doubles(w)));
     auto c = component_pairs(w);
     std::vector<std::size_t> ranks;
     for (std::size_t p = 0; p < c.size(); ++p)
@@ -225,6 +282,11 @@ coeffs multicomplex::inverse(const coeffs& w) const {
 
 // (III.1.45-52)
 coeffs multicomplex::exp(const coeffs& w, const ex& t) const {
+    check_size(w, "exp");
+    const coeffs tc{t};
+    if (is_real_number(t) && double_path({&w, &tc}, "exp"))
+        return from_doubles(multicomplex_d(n_).exp(to_doubles(w), GiNaC::ex_to<GiNaC::numeric>(t).to_double()));
+    if (!exact()) double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
     auto c = component_pairs(w);
     for (auto& z : c) z = multicomplex_component_exp<ex>(z.re, z.im, t);
     return from_component_pairs(c);
@@ -232,6 +294,8 @@ coeffs multicomplex::exp(const coeffs& w, const ex& t) const {
 
 // (III.1.53)
 coeffs multicomplex::log(const coeffs& w) const {
+    check_size(w, "log");
+    if (double_path({&w}, "log")) return from_doubles(multicomplex_d(n_).log(to_doubles(w)));
     auto c = component_pairs(w);
     std::vector<std::size_t> ranks;
     for (std::size_t p = 0; p < c.size(); ++p)
@@ -243,6 +307,7 @@ coeffs multicomplex::log(const coeffs& w) const {
 
 // (III.1.72-76): rho = sum r_p e_p = sum rho_k u_k, theta = sum i0 phi_p e_p = sum theta_k j_k.
 std::pair<coeffs, coeffs> multicomplex::semiexponential(const coeffs& w) const {
+    require_exact("semiexponential form");
     const auto c = component_pairs(w);
     std::vector<cplx<ex>> r, phi;
     for (const auto& z : c) {
@@ -266,6 +331,7 @@ bool is_zero_trig(const ex& x) {
 
 // (III.1.95) r_0 = r_1 = ... = r_{2^n-1} != 0 (compared as r_p^2).
 bool multicomplex::is_special_type(const coeffs& w, bool) const {
+    require_exact("special-type test");
     const auto c = component_pairs(w);
     const ex r0 = tidy(c[0].norm2());
     if (is_zero_trig(r0)) return false;
@@ -277,6 +343,7 @@ bool multicomplex::is_special_type(const coeffs& w, bool) const {
 // Thm III.1.3.1, (III.1.90-92): term k = rho_k u_k exp(theta); its components are
 // rho_k sigma(k) h_{p,k} e^{i phi_p} (III.1.25), of modulus |rho_k| for every p.
 std::vector<coeffs> multicomplex::special_type_decomposition(const coeffs& w) const {
+    require_exact("special-type decomposition");
     const auto c = component_pairs(w);
     const std::size_t N = half_dim();
     // rho_k = 2^{-n} sum_p sigma(k) h_{k,p} r_p (III.1.75): the u-coordinates of rho.

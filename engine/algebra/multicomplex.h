@@ -25,6 +25,16 @@
 // exact additions plus 2^11 normalizations, and the general methods of the base
 // class (canonical matrix, 4^{n+1} entries) are far out of reach. For larger n
 // use the double path (multicomplex_double.h), which reaches n = 24 and beyond.
+//
+// Floating-point elements take the double path (issue 13, 4.6): when every
+// coordinate of the operands is a number and one is a float (1.5, not 3/2),
+// multiply, inverse, exp, log and the zero-divisor ranks run in
+// multicomplex_d (one FWHT, O(n 2^n)) and give float coordinates. For
+// max_order < n <= multicomplex_d::max_order() the algebra is float-only:
+// numeric elements (exact numbers too) take the double path, and the exact-only
+// operations (characteristic and minimal polynomials, determinant, canonical
+// matrix, semiexponential and special-type forms, symbolic coordinates) are
+// refused with a size_error naming the limit.
 #pragma once
 
 #include <memory>
@@ -39,8 +49,11 @@ public:
     /// Largest n of the exact path (see the header comment for the reason).
     static constexpr unsigned max_order = 10;
 
-    /// The algebra (x)C^{n+1}; throws size_error for n > max_order.
+    /// The algebra (x)C^{n+1}; throws size_error for n > multicomplex_d::max_order()
+    /// (and float-only above max_order, see above).
     static std::shared_ptr<const multicomplex> make(unsigned n);
+    /// n <= max_order: exact coordinates are allowed.
+    bool exact() const { return n_ <= max_order; }
 
     /// n (the algebra has n+1 imaginary units i0..in).
     unsigned order() const { return n_; }
@@ -128,9 +141,16 @@ public:
     /// (III.4.8) Omega_p = omega_0 + sum_{k=1}^n (-1)^{p_k} omega_k.
     std::vector<GiNaC::ex> generating_frequencies(const std::vector<GiNaC::ex>& omega) const;
 
+    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
+
 private:
     explicit multicomplex(unsigned n) : n_(n) {}
     coeffs tidy_all(coeffs c) const;
+    /// Whether operands with these coordinates take the double path (see above);
+    /// throws size_error for a float-only algebra and non-numeric coordinates.
+    bool double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
+    /// Throws size_error naming the exact limit in a float-only algebra.
+    void require_exact(const char* what) const;
     unsigned n_;
 };
 

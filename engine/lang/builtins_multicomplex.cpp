@@ -49,7 +49,10 @@ void register_multicomplex_builtins(registry& r) {
         {"multicomplex", "multicomplex(n)",
          "The multicomplex algebra (x)C^{n+1} = C_0 (x) ... (x) C_n of order 2^{n+1}, with exact "
          "coefficients and the natural binary basis e_p = i0^{p_0} ... in^{p_n} (p_0 the most "
-         "significant bit, so i0 = e_{2^n} and i_k = e_{2^{n-k}}); n <= 10.",
+         "significant bit, so i0 = e_{2^n} and i_k = e_{2^{n-k}}). Exact for n <= 10; elements with "
+         "float coordinates (1.5, not 3/2) are computed in double precision (products, inverse, exp, log, "
+         "zero divisors; one fast Walsh-Hadamard transform), and for 10 < n <= the machine's limit "
+         "(about 24) the algebra is double-precision only: numeric coordinates, results in floats.",
          "(III.1.2), (III.1.4), (III.1.7)", "A := multicomplex(2)", section, 1, 1, {}},
         [](const std::vector<value>& args, context&, const builtin& b) -> value {
             const long n = arg_int(args, 0, b, 0, LONG_MAX);
