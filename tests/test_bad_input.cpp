@@ -106,6 +106,11 @@ TEST(BadInput, ListNestingIsLimited) {
     for (int i = 0; i < 1200; ++i) failed += t.run("l := [l]");
     EXPECT_EQ(failed, 201);  // depth 1000 is allowed, 1001 .. 1201 are not
     EXPECT_NE(t.err.str().find("t.sr:1:6: error: lists nest more than 1000 deep"), std::string::npos);
+    // the failed assignment leaves l without a value (not its old one)
+    EXPECT_NE(t.run("l"), 0);
+    EXPECT_NE(t.err.str().find("l has no value: its assignment at t.sr:1 failed"), std::string::npos);
+    EXPECT_EQ(t.run("l := []"), 0);
+    for (int i = 0; i < 999; ++i) ASSERT_EQ(t.run("l := [l]"), 0) << i;
     EXPECT_EQ(t.val("l").list_depth(), 1000u);
     EXPECT_EQ(t.run("l == l"), 0);  // printing and comparing stay within the limit
     list deep;

@@ -248,6 +248,14 @@ TEST(Cli, FailedAssignmentLeavesNoFreeName) {
         << r.err;
     EXPECT_NE(r.err.find("<stdin>:4:3: error: n has no value: its assignment at <stdin>:3 failed"), std::string::npos)
         << r.err;
+    // a name that had a value does not keep it when its new assignment fails: the
+    // old value in a later result would be a silent wrong answer
+    const std::string again = "m := 5\nm := 1/0\nm + 1\nm := 7\nm + 1\n";
+    r = run("--no-caret", &again);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.out, "8\n");
+    EXPECT_NE(r.err.find("<stdin>:3:1: error: m has no value: its assignment at <stdin>:2 failed"), std::string::npos)
+        << r.err;
 }
 
 // A sum or product of N symbols is built at once (one GiNaC add/mul), not term by

@@ -250,3 +250,30 @@ TEST(Equality, CheckReportsAnUndecidedDifferenceNotFalse) {
 }
 
 }  // namespace
+
+// Issue 13 (audit of "not proved 0 = nonzero"): a decision that divides by x or
+// counts it as a direction decides constants or refuses them. z = cos(2 pi/9) +
+// cos(4 pi/9) - cos(pi/9) is 0 (cos 40 + cos 80 = cos 20 degrees), which the zero
+// test does not prove and no evaluation can show nonzero.
+TEST(EqualityIssue13, DecisionsOnUnprovedConstantsAreRefusedNotGuessed) {
+    using GiNaC::ex;
+    using symrep::is_nonzero_generic;
+    const ex z = GiNaC::cos(2 * GiNaC::Pi / 9) + GiNaC::cos(4 * GiNaC::Pi / 9) - GiNaC::cos(GiNaC::Pi / 9);
+    EXPECT_THROW(is_nonzero_generic(z, "test"), symrep::domain_error);
+    EXPECT_TRUE(is_nonzero_generic(z + ex(1) / 1000000, "test"));  // a witness
+    EXPECT_FALSE(is_nonzero_generic(GiNaC::pow(GiNaC::sin(GiNaC::Pi / 7), 2) + GiNaC::pow(GiNaC::cos(GiNaC::Pi / 7), 2) - 1,
+                                    "test"));  // proved 0
+    const GiNaC::realsymbol a("a");
+    EXPECT_TRUE(is_nonzero_generic(a - 1, "test"));  // the generic reading
+    // through the language: y = 1 + z i1 is 1, whose minimal polynomial is X - 1;
+    // main answered X^2 - 2 X + 1 + z^2 (degree 2: wrong). The inverse of z refuses.
+    std::ostringstream out, err;
+    session s(out, err);
+    ASSERT_EQ(s.run_string("z := cos(2*pi/9) + cos(4*pi/9) - cos(pi/9)\ny := element(multicomplex(1), [1, z, 0, 0])", "t"),
+              0)
+        << err.str();
+    EXPECT_NE(s.run_string("minpoly(y, X)", "t"), 0);
+    EXPECT_NE(err.str().find("cannot decide whether"), std::string::npos) << err.str();
+    EXPECT_EQ(out.str().find("X^2"), std::string::npos) << out.str();
+    EXPECT_NE(s.run_string("1/element(multicomplex(0), [z, 0])", "t"), 0);
+}

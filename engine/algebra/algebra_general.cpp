@@ -4,6 +4,7 @@
 #include "algebra/algebra.h"
 
 #include "algebra/exact_linear.h"
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
 #include "core/expression_size.h"
@@ -64,7 +65,9 @@ ex algebra::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
 }
 
 // (II.1.22) w is a zero divisor iff det [w] = 0.
-bool algebra::is_zero_divisor(const coeffs& w) const { return is_zero_scalar(determinant(w)); }
+bool algebra::is_zero_divisor(const coeffs& w) const {
+    return !is_nonzero_generic(determinant(w), "zero divisor test in " + name());
+}
 
 // w x = 1: the coordinates of w x are [w]^T x (II.1.4), so x solves [w]^T x = e.
 coeffs algebra::inverse(const coeffs& w) const {

@@ -1,6 +1,7 @@
 // symrep/algebra/element.cpp
 #include "algebra/element.h"
 
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
 
@@ -56,7 +57,7 @@ element operator*(const ex& s, const element& a) { return {a.A_, algebra::scale(
 element operator/(const element& a, const element& b) { return a * b.inverse(); }
 
 element operator/(const element& a, const ex& s) {
-    if (is_zero_scalar(s)) throw domain_error("division of an algebra element by zero");
+    if (!is_nonzero_generic(s, "division of an algebra element")) throw domain_error("division of an algebra element by zero");
     return {a.A_, algebra::scale(1 / s, a.c_)};
 }
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 
 namespace symrep {
@@ -29,7 +30,9 @@ std::optional<std::vector<ex>> krylov_basis::add(const coeffs& v_in) {
             if (!r.comb[i].is_zero()) comb[i] = tidy(comb[i] - f * r.comb[i]);
     }
     for (std::size_t k = 0; k < v.size(); ++k) {
-        if (is_zero_scalar(v[k])) continue;
+        // an unproved zero taken as a pivot would add a direction (a minimal polynomial
+        // of too high a degree): constants are decided or refused
+        if (!is_nonzero_generic(v[k], "linear independence")) continue;
         rows_.push_back({std::move(v), k, std::move(comb)});
         return std::nullopt;
     }
@@ -47,7 +50,7 @@ std::optional<std::vector<ex>> solve_linear(std::vector<std::vector<ex>> A, std:
     std::size_t r = 0;
     for (std::size_t c = 0; c < cols; ++c) {
         std::size_t p = r;
-        while (p < rows && is_zero_scalar(A[p][c])) ++p;
+        while (p < rows && !is_nonzero_generic(A[p][c], "a pivot of a linear system")) ++p;
         if (p == rows) return std::nullopt;  // rank deficient
         std::swap(A[p], A[r]);
         std::swap(b[p], b[r]);
@@ -75,7 +78,7 @@ std::vector<coeffs> null_space(std::vector<std::vector<ex>> A) {
     std::size_t r = 0;
     for (std::size_t c = 0; c < cols && r < rows; ++c) {
         std::size_t p = r;
-        while (p < rows && is_zero_scalar(A[p][c])) ++p;
+        while (p < rows && !is_nonzero_generic(A[p][c], "a pivot of a linear system")) ++p;
         if (p == rows) continue;
         std::swap(A[p], A[r]);
         const ex piv = tidy(A[r][c]);

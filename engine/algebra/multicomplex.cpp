@@ -7,6 +7,7 @@
 #include "algebra/multicomplex_double.h"
 #include "algebra/multicomplex_indexing.h"
 #include "algebra/multicomplex_transform.h"
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
 #include "core/expression_size.h"
@@ -230,10 +231,11 @@ ex multicomplex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     struct factor { ex a, b2; bool linear; };
     std::vector<factor> distinct;
     for (const auto& z : component_pairs(w)) {
-        const bool linear = is_zero_scalar(z.im);
+        const bool linear = !is_nonzero_generic(z.im, "minimal polynomial in " + name());
         const ex b2 = linear ? ex(0) : tidy(z.im * z.im);
         const bool seen = std::any_of(distinct.begin(), distinct.end(), [&](const factor& f) {
-            return f.linear == linear && is_zero_scalar(f.a - z.re) && is_zero_scalar(f.b2 - b2);
+            return f.linear == linear && !is_nonzero_generic(f.a - z.re, "minimal polynomial in " + name()) &&
+                   !is_nonzero_generic(f.b2 - b2, "minimal polynomial in " + name());
         });
         if (!seen) distinct.push_back({z.re, b2, linear});
     }
@@ -251,7 +253,9 @@ std::vector<std::size_t> multicomplex::zero_divisor_ranks(const coeffs& w) const
     std::vector<std::size_t> r;
     const auto c = component_pairs(w);
     for (std::size_t p = 0; p < c.size(); ++p)
-        if (is_zero_scalar(c[p].re) && is_zero_scalar(c[p].im)) r.push_back(p);
+        if (!is_nonzero_generic(c[p].re, name() + ": an idempotent component") &&
+            !is_nonzero_generic(c[p].im, name() + ": an idempotent component"))
+            r.push_back(p);
     return r;
 }
 
@@ -274,7 +278,9 @@ coeffs multicomplex::inverse(const coeffs& w) const {
     auto c = component_pairs(w);
     std::vector<std::size_t> ranks;
     for (std::size_t p = 0; p < c.size(); ++p)
-        if (is_zero_scalar(c[p].re) && is_zero_scalar(c[p].im)) ranks.push_back(p);
+        if (!is_nonzero_generic(c[p].re, name() + ": an idempotent component") &&
+            !is_nonzero_generic(c[p].im, name() + ": an idempotent component"))
+            ranks.push_back(p);
     if (!ranks.empty()) throw_zero_divisor(*this, "inverse", std::move(ranks));
     for (auto& z : c) z = multicomplex_component_inverse<ex>(z.re, z.im);
     return from_component_pairs(c);
@@ -299,7 +305,9 @@ coeffs multicomplex::log(const coeffs& w) const {
     auto c = component_pairs(w);
     std::vector<std::size_t> ranks;
     for (std::size_t p = 0; p < c.size(); ++p)
-        if (is_zero_scalar(c[p].re) && is_zero_scalar(c[p].im)) ranks.push_back(p);
+        if (!is_nonzero_generic(c[p].re, name() + ": an idempotent component") &&
+            !is_nonzero_generic(c[p].im, name() + ": an idempotent component"))
+            ranks.push_back(p);
     if (!ranks.empty()) throw_zero_divisor(*this, "logarithm", std::move(ranks));
     for (auto& z : c) z = multicomplex_component_log<ex>(z.re, z.im);
     return from_component_pairs(c);

@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "algebra/sobrero_kernel.h"
 #include "core/error.h"
@@ -92,17 +93,20 @@ ex sobrero::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     const std::size_t m = n_ + 1;
     std::size_t k0 = 0;
     for (std::size_t k = 1; k < m && k0 == 0; ++k)
-        if (!is_zero_scalar(w[k]) || !is_zero_scalar(w[m + k])) k0 = k;
+        if (is_nonzero_generic(w[k], "minimal polynomial in " + name()) ||
+            is_nonzero_generic(w[m + k], "minimal polynomial in " + name()))
+            k0 = k;
     const int index = k0 == 0 ? 1 : int(n_ / k0) + 1;
     const ex a0 = w[0], b0 = w[m];
-    const ex factor = is_zero_scalar(b0) ? ex(X - a0) : ex(X * X - 2 * a0 * X + a0 * a0 + b0 * b0);
+    const ex factor = !is_nonzero_generic(b0, "minimal polynomial in " + name()) ? ex(X - a0) : ex(X * X - 2 * a0 * X + a0 * a0 + b0 * b0);
     return guarded_expand(GiNaC::pow(factor, index), "minimal polynomial");
 }
 
 // (III.2.13) w is a zero divisor iff a_0 = b_0 = 0.
 bool sobrero::is_zero_divisor(const coeffs& w) const {
     check_size(w, "zero-divisor test");
-    return is_zero_scalar(w[0]) && is_zero_scalar(w[n_ + 1]);
+    return !is_nonzero_generic(w[0], "zero divisor test in " + name()) &&
+           !is_nonzero_generic(w[n_ + 1], "zero divisor test in " + name());
 }
 
 std::vector<std::size_t> sobrero::zero_divisor_ranks(const coeffs& w) const {

@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "algebra/walsh_kernel.h"
 #include "core/error.h"
@@ -96,7 +97,7 @@ std::vector<std::size_t> walsh::zero_divisor_ranks(const coeffs& w) const {
     const std::vector<ex> a = idempotent_components(w);
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < a.size(); ++p)
-        if (is_zero_scalar(a[p])) r.push_back(p);
+        if (!is_nonzero_generic(a[p], name() + ": an idempotent component")) r.push_back(p);
     return r;
 }
 
@@ -126,7 +127,7 @@ ex walsh::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     for (const auto& x : a) {
         bool seen = false;
         for (const auto& r : roots)
-            if (is_zero_scalar(x - r)) { seen = true; break; }
+            if (!is_nonzero_generic(x - r, "minimal polynomial in " + name())) { seen = true; break; }
         if (!seen) roots.push_back(x);
     }
     ex p = 1;
@@ -154,7 +155,7 @@ coeffs walsh::inverse(const coeffs& w) const {
     std::vector<ex> a = idempotent_components(w);
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < a.size(); ++p)
-        if (is_zero_scalar(a[p])) r.push_back(p);
+        if (!is_nonzero_generic(a[p], name() + ": an idempotent component")) r.push_back(p);
     if (!r.empty()) throw_zero_divisor(name(), "inverse", r);
     for (auto& x : a) x = tidy(1 / x);
     return wm::from_components(std::move(a));
@@ -189,7 +190,7 @@ coeffs walsh::log(const coeffs& w) const {
     std::vector<ex> a = idempotent_components(w);
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < a.size(); ++p)
-        if (is_zero_scalar(a[p])) r.push_back(p);
+        if (!is_nonzero_generic(a[p], name() + ": an idempotent component")) r.push_back(p);
     if (!r.empty()) throw_zero_divisor(name(), "log", r);
     for (std::size_t p = 0; p < a.size(); ++p) {
         const int s = positive_root(a[p]);

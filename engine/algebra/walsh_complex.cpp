@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "scalar/cplx.h"
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "algebra/walsh_kernel.h"
 #include "core/error.h"
@@ -94,7 +95,9 @@ coeffs walsh_complex::from_idempotent_components(const std::vector<ex>& c) const
 }
 
 namespace {
-bool zero_c(const cx& z) { return is_zero_scalar(z.re) && is_zero_scalar(z.im); }
+bool zero_c(const cx& z) {
+    return !is_nonzero_generic(z.re, "an idempotent component") && !is_nonzero_generic(z.im, "an idempotent component");
+}
 
 std::vector<std::size_t> ranks_of(const std::vector<cx>& y) {
     std::vector<std::size_t> r;
@@ -143,10 +146,10 @@ ex walsh_complex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "minimal polynomial");
     std::vector<ex> factors;
     for (const auto& z : wm::complex_components(w)) {
-        const ex f = is_zero_scalar(z.im) ? ex(X - z.re) : ex(X * X - 2 * z.re * X + z.norm2());
+        const ex f = !is_nonzero_generic(z.im, "minimal polynomial") ? ex(X - z.re) : ex(X * X - 2 * z.re * X + z.norm2());
         bool seen = false;
         for (const auto& g : factors)
-            if (is_zero_scalar(GiNaC::expand(f - g))) { seen = true; break; }
+            if (!is_nonzero_generic(GiNaC::expand(f - g), "minimal polynomial")) { seen = true; break; }
         if (!seen) factors.push_back(f);
     }
     ex p = 1;

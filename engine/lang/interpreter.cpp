@@ -51,6 +51,11 @@ GiNaC::ex session::symbol(const std::string& name) {
     return s;
 }
 
+void session::forget_failed(const std::string& name, const std::string& where) {
+    vars_.erase(name);
+    failed_[name] = where;
+}
+
 void session::set(const std::string& name, value v) {
     failed_.erase(name);
     vars_[name] = std::move(v);
@@ -299,8 +304,7 @@ int session::run_text(const std::string& text, const std::string& name, int firs
         try {
             s = p.next_statement();
         } catch (const syntax_error& e) {
-            if (!p.assigned_name().empty() && !get(p.assigned_name()))
-                failed_[p.assigned_name()] = name + ":" + std::to_string(p.statement_begin().first);
+            if (!p.assigned_name().empty()) forget_failed(p.assigned_name(), name + ":" + std::to_string(p.statement_begin().first));
             report(e.where, std::string("syntax error: ") + e.what());
             p.recover();
             continue;
@@ -319,10 +323,9 @@ int session::run_text(const std::string& text, const std::string& name, int firs
             try {
                 exec(*s, true);
             } catch (...) {
-                // a name left without a value must not read as a free symbol later
-                // (a name that had a value keeps it)
-                if (s->kind == node::assign && !get(s->text))
-                    failed_[s->text] = name + ":" + std::to_string(s->line);
+                // a name whose assignment failed must not read as a free symbol later,
+                // nor as the value it had before (a stale value in a later result)
+                if (s->kind == node::assign) forget_failed(s->text, name + ":" + std::to_string(s->line));
                 throw;
             }
         } catch (const script_error& e) {

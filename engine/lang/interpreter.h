@@ -173,6 +173,9 @@ private:
     std::map<std::string, std::string> sources_;  ///< script texts by name (for the caret)
     std::map<std::string, int> source_line_;      ///< the line number of the first line in sources_
     std::map<std::string, std::string> failed_;   ///< names whose last assignment failed: FILE:LINE
+    /// After a failed assignment to `name` at `where`: its old value is dropped and a
+    /// use of the name is an error naming `where`, until it is assigned again.
+    void forget_failed(const std::string& name, const std::string& where);
     int run_text(const std::string& text, const std::string& name, int first_line);
     std::vector<value> results_;  ///< %1, %2, ...
     std::chrono::steady_clock::time_point statement_start_;  ///< for options().time_limit

@@ -10,6 +10,7 @@
 //   of the integral and produces the secular powers of t exactly.
 #include "mechanics/quasi_polynomial.h"
 
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
 
@@ -77,6 +78,9 @@ cex inverse_cex(const cex& z, const char* where) {
     if (is_zero_cex(z))
         throw domain_error(std::string("division by an exact zero in ") + where);
     const ex n = tidy(z.norm2());
+    // a constant |z|^2 neither proved 0 nor seen nonzero is refused, not divided by
+    if (!is_nonzero_generic(n, std::string("division in ") + where))
+        throw domain_error(std::string("division by an exact zero in ") + where);
     return {tidy(z.re / n), tidy(-z.im / n)};
 }
 

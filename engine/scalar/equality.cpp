@@ -132,4 +132,19 @@ std::string witness_text(const zero_decision& d) {
     return out;
 }
 
+bool is_nonzero_generic(const GiNaC::ex& x, const std::string& what) {
+    if (GiNaC::is_a<GiNaC::numeric>(x)) return !x.is_zero();
+    if (is_zero_scalar(x)) return false;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;  // generic reading
+    const zero_decision d = decide_zero(x);
+    if (d.is_zero == truth::yes) return false;
+    if (d.is_zero == truth::no) return true;
+    std::string text = message_text(x);
+    if (text.size() > 200) text = text.substr(0, 197) + "...";
+    throw domain_error(what + ": cannot decide whether " + text +
+                       " is 0 (not proved 0, and not seen nonzero at 80 digits); taking it as nonzero could "
+                       "give a wrong answer");
+}
+
 }  // namespace symrep

@@ -36,4 +36,14 @@ zero_decision decide_zero(const GiNaC::ex& x);
 /// The point of a decision as text: "at x = 3/2, y = -1/3" ("" without symbols).
 std::string witness_text(const zero_decision& d);
 
+/// For a decision that divides by x, takes it as a pivot or counts it as an
+/// independent direction: false when x is proved 0; true when x is a nonzero
+/// number or a constant seen nonzero (a witness), or when x has symbols and is
+/// not proved 0 (the generic reading of the algebra and solver layers, valid for
+/// all but special values of the symbols). A constant neither proved 0 nor seen
+/// nonzero (an identity among radicals or cosines the zero test does not know)
+/// throws domain_error "cannot decide whether ... is 0" naming `what`: taking it
+/// as nonzero could give a wrong answer.
+bool is_nonzero_generic(const GiNaC::ex& x, const std::string& what);
+
 }  // namespace symrep
