@@ -96,5 +96,5 @@ TEST_F(BuiltinsSW, Walsh) {
     const element v1 = call("walsh_generator", {C, value(1)}).as_element();
     EXPECT_TRUE(v1 * v1 == element::one(C.as_algebra()));
     EXPECT_THROW(call("walsh_generator", {call("sobrero", {value(1)}), value(0)}), type_error);
-    EXPECT_THROW(call("walsh_complex", {value(16)}), size_error);
+    EXPECT_THROW(call("walsh_complex", {value(26)}), size_error);
 }

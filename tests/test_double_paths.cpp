@@ -444,3 +444,40 @@ TEST(DoublePathsIssue13, FloatElementsTakeTheDoublePath) {
     EXPECT_NE(ms.find("symbolic coordinates"), std::string::npos) << ms;
     EXPECT_THROW(multicomplex::make(multicomplex_d::max_order() + 1), size_error);
 }
+
+// The same for the Walsh algebra and its complex extension: float elements agree
+// with the exact path evaluated (1e-12 relative, as above), and walsh(20),
+// walsh_complex(18) are double-precision only.
+TEST(DoublePathsIssue13, WalshFloatElementsTakeTheDoublePath) {
+    auto close = [](const coeffs& f, const coeffs& e, const char* what) {
+        for (std::size_t k = 0; k < f.size(); ++k) {
+            ASSERT_TRUE(f[k].is_zero() || !GiNaC::ex_to<GiNaC::numeric>(f[k]).is_rational()) << what << k << ": " << f[k];
+            const double want = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e[k])).to_double();
+            EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(f[k])).to_double(), want, 1e-12 * (1 + std::abs(want)))
+                << what << " " << k;
+        }
+    };
+    const auto W = walsh::make(2);
+    const coeffs xf{GiNaC::numeric(1.5), GiNaC::numeric(0.25), GiNaC::numeric(0.5), GiNaC::numeric(0.125)},
+        xe{GiNaC::numeric(3, 2), GiNaC::numeric(1, 4), GiNaC::numeric(1, 2), GiNaC::numeric(1, 8)};
+    close(W->exp(xf, 1), W->exp(xe, 1), "walsh exp");
+    close(W->inverse(xf), W->inverse(xe), "walsh inverse");
+    close(W->log(xf), W->log(xe), "walsh log");
+    close(W->multiply(xf, xf), W->multiply(xe, xe), "walsh product");
+    const auto C = walsh_complex::make(1);
+    close(C->log(xf), C->log(xe), "walsh_complex log");
+    close(C->exp(xf, 1), C->exp(xe, 1), "walsh_complex exp");
+
+    const auto V = walsh::make(20);
+    coeffs z = V->zero();
+    z[0] = GiNaC::numeric(2.0);
+    z[std::size_t(1) << 19] = GiNaC::numeric(0.5);  // u_0 / 2
+    const coeffs one = V->multiply(V->inverse(z), z);
+    for (std::size_t k = 0; k < V->dim(); k += 4099)
+        EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(one[k])).to_double(), k == 0 ? 1.0 : 0.0, 1e-12) << k;
+    const GiNaC::symbol X("X");
+    EXPECT_THROW(V->minpoly(z, X), size_error);
+    EXPECT_THROW(walsh::make(walsh_d::max_n + 1), size_error);
+    EXPECT_FALSE(dynamic_cast<const walsh_complex&>(*walsh_complex::make(18)).exact());
+    EXPECT_THROW(walsh_complex::make(walsh_complex_d::max_n + 1), size_error);
+}

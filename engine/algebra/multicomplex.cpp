@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "algebra/double_path.h"
 #include "algebra/multicomplex_double.h"
 #include "algebra/multicomplex_indexing.h"
 #include "algebra/multicomplex_transform.h"
@@ -15,6 +16,7 @@
 namespace symrep {
 
 using GiNaC::ex;
+namespace dp = double_path;
 
 namespace {
 
@@ -55,47 +57,12 @@ std::shared_ptr<const multicomplex> multicomplex::make(unsigned n) {
     return std::shared_ptr<const multicomplex>(new multicomplex(n));
 }
 
-namespace {
-
-bool is_real_number(const ex& x) {
-    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real();
-}
-bool is_float(const ex& x) { return is_real_number(x) && !GiNaC::ex_to<GiNaC::numeric>(x).is_rational(); }
-
-std::vector<double> to_doubles(const coeffs& c) {
-    std::vector<double> v(c.size());
-    for (std::size_t k = 0; k < c.size(); ++k) v[k] = GiNaC::ex_to<GiNaC::numeric>(c[k]).to_double();
-    return v;
-}
-
-coeffs from_doubles(const std::vector<double>& v) {
-    coeffs c(v.size());
-    for (std::size_t k = 0; k < v.size(); ++k) c[k] = v[k] == 0 ? ex(0) : ex(GiNaC::numeric(v[k]));
-    return c;
-}
-
-}  // namespace
-
 void multicomplex::require_exact(const char* what) const {
-    if (!exact())
-        throw size_error(std::string(what) + " in " + name() + ": the exact multicomplex algebra is limited to n <= " +
-                         std::to_string(max_order) + "; above it " + name() +
-                         " computes in double precision only (products, inverse, exp, log, zero divisors "
-                         "of elements with numeric coordinates)");
+    if (!exact()) dp::refuse_exact(name(), max_order, what);
 }
 
-bool multicomplex::double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
-    bool numeric = true, any_float = false;
-    for (const coeffs* c : operands)
-        for (const ex& x : *c) {
-            numeric = numeric && is_real_number(x);
-            any_float = any_float || is_float(x);
-        }
-    if (!exact() && !numeric)
-        throw size_error(std::string(what) + " in " + name() + ": an element with symbolic coordinates needs the "
-                         "exact multicomplex algebra, which is limited to n <= " + std::to_string(max_order) +
-                         "; above it the coordinates must be numbers (double precision)");
-    return numeric && (any_float || !exact());
+bool multicomplex::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
+    return dp::takes(operands, exact(), name(), max_order, what);
 }
 
 GiNaC::matrix multicomplex::canonical_matrix(const coeffs& w) const {
@@ -138,7 +105,8 @@ coeffs multicomplex::from_component_pairs(const std::vector<cplx<ex>>& c) const 
 coeffs multicomplex::multiply(const coeffs& a, const coeffs& b) const {
     check_size(a, "product");
     check_size(b, "product");
-    if (double_path({&a, &b}, "product")) return from_doubles(multicomplex_d(n_).multiply(to_doubles(a), to_doubles(b)));
+    if (takes_double_path({&a, &b}, "product"))
+        return dp::from_doubles(multicomplex_d(n_).multiply(dp::to_doubles(a), dp::to_doubles(b)));
     auto ca = multicomplex_components<ex>(a, n_);
     const auto cb = multicomplex_components<ex>(b, n_);
     for (std::size_t p = 0; p < ca.size(); ++p) ca[p] = ca[p] * cb[p];
@@ -249,7 +217,7 @@ ex multicomplex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
 std::vector<std::size_t> multicomplex::zero_divisor_ranks(const coeffs& w) const {
     check_size(w, "zero divisor ranks");
     // (III.1.55) in doubles: |c_p| <= 1e-12 max |c_q| (multicomplex_d::default_rel_tol)
-    if (double_path({&w}, "zero divisor ranks")) return multicomplex_d(n_).zero_divisor_ranks(to_doubles(w));
+    if (takes_double_path({&w}, "zero divisor ranks")) return multicomplex_d(n_).zero_divisor_ranks(dp::to_doubles(w));
     std::vector<std::size_t> r;
     const auto c = component_pairs(w);
     for (std::size_t p = 0; p < c.size(); ++p)
@@ -274,7 +242,7 @@ namespace {
 // (III.1.57)
 coeffs multicomplex::inverse(const coeffs& w) const {
     check_size(w, "inverse");
-    if (double_path({&w}, "inverse")) return from_doubles(multicomplex_d(n_).inverse(to_doubles(w)));
+    if (takes_double_path({&w}, "inverse")) return dp::from_doubles(multicomplex_d(n_).inverse(dp::to_doubles(w)));
     auto c = component_pairs(w);
     std::vector<std::size_t> ranks;
     for (std::size_t p = 0; p < c.size(); ++p)
@@ -290,9 +258,9 @@ coeffs multicomplex::inverse(const coeffs& w) const {
 coeffs multicomplex::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
     const coeffs tc{t};
-    if (is_real_number(t) && double_path({&w, &tc}, "exp"))
-        return from_doubles(multicomplex_d(n_).exp(to_doubles(w), GiNaC::ex_to<GiNaC::numeric>(t).to_double()));
-    if (!exact()) double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
+    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
+        return dp::from_doubles(multicomplex_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
+    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
     auto c = component_pairs(w);
     for (auto& z : c) z = multicomplex_component_exp<ex>(z.re, z.im, t);
     return from_component_pairs(c);
@@ -301,7 +269,7 @@ coeffs multicomplex::exp(const coeffs& w, const ex& t) const {
 // (III.1.53)
 coeffs multicomplex::log(const coeffs& w) const {
     check_size(w, "log");
-    if (double_path({&w}, "log")) return from_doubles(multicomplex_d(n_).log(to_doubles(w)));
+    if (takes_double_path({&w}, "log")) return dp::from_doubles(multicomplex_d(n_).log(dp::to_doubles(w)));
     auto c = component_pairs(w);
     std::vector<std::size_t> ranks;
     for (std::size_t p = 0; p < c.size(); ++p)

@@ -148,7 +148,7 @@ private:
     coeffs tidy_all(coeffs c) const;
     /// Whether operands with these coordinates take the double path (see above);
     /// throws size_error for a float-only algebra and non-numeric coordinates.
-    bool double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
+    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
     /// Throws size_error naming the exact limit in a float-only algebra.
     void require_exact(const char* what) const;
     unsigned n_;

@@ -5,6 +5,8 @@
 
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
+#include "algebra/double_path.h"
+#include "algebra/walsh_double.h"
 #include "algebra/walsh_kernel.h"
 #include "core/error.h"
 #include "core/expression_size.h"
@@ -13,19 +15,34 @@ namespace symrep {
 
 using GiNaC::ex;
 namespace wm = walsh_math;
+namespace dp = double_path;
 
 algebra_ptr walsh::make(long n) {
     if (n < 0) throw domain_error("walsh(n): n must be >= 0, got " + std::to_string(n));
-    if (n > long(max_n))
+    if (n > long(walsh_d::max_n))
         throw size_error("walsh(n): n = " + std::to_string(n) + " is too large; the exact Walsh "
-                         "algebra is limited to n <= " + std::to_string(max_n) + " (order 2^n)");
+                         "algebra is limited to n <= " + std::to_string(max_n) + " (order 2^n) and the "
+                         "double-precision path to n <= " + std::to_string(walsh_d::max_n));
     return std::make_shared<walsh>(unsigned(n));
 }
 
 walsh::walsh(unsigned n) : n_(n) {
-    if (n > max_n)
+    if (n > walsh_d::max_n)
         throw size_error("walsh(n): n = " + std::to_string(n) + " exceeds the limit n <= " +
-                         std::to_string(max_n));
+                         std::to_string(walsh_d::max_n) + " of the double-precision path");
+}
+
+void walsh::require_exact(const char* what) const {
+    if (!exact()) dp::refuse_exact(name(), max_n, what);
+}
+
+bool walsh::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
+    return dp::takes(operands, exact(), name(), max_n, what);
+}
+
+GiNaC::matrix walsh::canonical_matrix(const coeffs& w) const {
+    require_exact("canonical matrix");
+    return algebra::canonical_matrix(w);
 }
 
 std::string walsh::name() const { return "walsh(" + std::to_string(n_) + ")"; }
@@ -61,6 +78,8 @@ coeffs walsh::basis_product(std::size_t i, std::size_t j) const {
 coeffs walsh::multiply(const coeffs& a, const coeffs& b) const {
     check_size(a, "walsh product");
     check_size(b, "walsh product");
+    if (takes_double_path({&a, &b}, "product"))
+        return dp::from_doubles(walsh_d(n_).multiply(dp::to_doubles(a), dp::to_doubles(b)));
     std::vector<ex> x = wm::components(a), y = wm::components(b);
     for (std::size_t p = 0; p < x.size(); ++p) x[p] = x[p] * y[p];
     return wm::from_components(std::move(x));
@@ -94,6 +113,9 @@ coeffs walsh::from_idempotent_components(const std::vector<ex>& a) const {
 
 // (III.3.31-32) the ranks p with a_p = 0.
 std::vector<std::size_t> walsh::zero_divisor_ranks(const coeffs& w) const {
+    check_size(w, "zero divisor ranks");
+    // (III.3.31) in doubles: |a_p| <= 1e-12 max |a_q|
+    if (takes_double_path({&w}, "zero divisor ranks")) return walsh_d(n_).zero_divisor_ranks(dp::to_doubles(w));
     const std::vector<ex> a = idempotent_components(w);
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < a.size(); ++p)
@@ -106,6 +128,7 @@ bool walsh::is_zero_divisor(const coeffs& w) const { return !zero_divisor_ranks(
 
 // (III.3.28) det [f] = a_0 a_1 ... a_{2^n-1}.
 ex walsh::determinant(const coeffs& w) const {
+    require_exact("determinant");
     const std::vector<ex> a = idempotent_components(w);
     ex d = 1;
     for (const auto& x : a) d = d * x;
@@ -114,6 +137,7 @@ ex walsh::determinant(const coeffs& w) const {
 
 // (III.3.33-34) p(X) = prod_p (X - a_p), returned expanded.
 ex walsh::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
+    require_exact("characteristic polynomial");
     const std::vector<ex> a = idempotent_components(w);
     ex p = 1;
     for (const auto& x : a) p = guarded_expand(p * (X - x), "characteristic polynomial");
@@ -122,6 +146,7 @@ ex walsh::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
 
 // W is semisimple (Thm III.3.2.2): minimal polynomial = prod over the DISTINCT a_p of (X - a_p).
 ex walsh::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
+    require_exact("minimal polynomial");
     const std::vector<ex> a = idempotent_components(w);
     std::vector<ex> roots;
     for (const auto& x : a) {
@@ -152,6 +177,8 @@ std::string list_ranks(const std::vector<std::size_t>& r) {
 
 // Inverse through the components: a_p -> 1/a_p (III.3.26).
 coeffs walsh::inverse(const coeffs& w) const {
+    check_size(w, "inverse");
+    if (takes_double_path({&w}, "inverse")) return dp::from_doubles(walsh_d(n_).inverse(dp::to_doubles(w)));
     std::vector<ex> a = idempotent_components(w);
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < a.size(); ++p)
@@ -163,6 +190,11 @@ coeffs walsh::inverse(const coeffs& w) const {
 
 // (III.3.44) exp(f t) = 2^{-n} sum_p [sum_k (-1)^{<p,k>} e^{a_k t}] w_p.
 coeffs walsh::exp(const coeffs& w, const ex& t) const {
+    check_size(w, "exp");
+    const coeffs tc{t};
+    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
+        return dp::from_doubles(walsh_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
+    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
     std::vector<ex> a = idempotent_components(w);
     for (auto& x : a) x = exp_scalar(tidy(x * t));
     return wm::from_components(std::move(a));
@@ -187,6 +219,8 @@ int positive_root(const ex& a) {
 
 // Thm III.3.3.1 (III.3.39-40): g_p = 2^{-n} sum_k (-1)^{<p,k>} ln a_k, every a_k > 0.
 coeffs walsh::log(const coeffs& w) const {
+    check_size(w, "log");
+    if (takes_double_path({&w}, "log")) return dp::from_doubles(walsh_d(n_).log(dp::to_doubles(w)));
     std::vector<ex> a = idempotent_components(w);
     std::vector<std::size_t> r;
     for (std::size_t p = 0; p < a.size(); ++p)

@@ -24,9 +24,14 @@ public:
     /// Largest n accepted for the exact algebra (order 2^n).
     static constexpr unsigned max_n = 16;
 
-    /// The algebra W of order 2^n; throws size_error for n > max_n.
+    /// The algebra W of order 2^n; throws size_error for n > walsh_d::max_n. Float
+    /// elements take the double path (walsh_d; algebra/double_path.h), and above
+    /// max_n the algebra is double-precision only (exact-only operations refused).
     static algebra_ptr make(long n);
     explicit walsh(unsigned n);
+    /// n <= max_n: exact coordinates are allowed.
+    bool exact() const { return n_ <= max_n; }
+    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
 
     unsigned n() const { return n_; }
     std::string name() const override;  // "walsh(n)"
@@ -60,6 +65,8 @@ public:
     std::size_t generator_index(std::size_t k) const;
 
 private:
+    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
+    void require_exact(const char* what) const;
     unsigned n_;
 };
 

@@ -6,6 +6,8 @@
 #include "scalar/cplx.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
+#include "algebra/double_path.h"
+#include "algebra/walsh_double.h"
 #include "algebra/walsh_kernel.h"
 #include "core/error.h"
 #include "core/expression_size.h"
@@ -14,21 +16,36 @@ namespace symrep {
 
 using GiNaC::ex;
 namespace wm = walsh_math;
+namespace dp = double_path;
 using cx = cplx<ex>;
 
 algebra_ptr walsh_complex::make(long n) {
     if (n < 0) throw domain_error("walsh_complex(n): n must be >= 0, got " + std::to_string(n));
-    if (n > long(max_n))
+    if (n > long(walsh_complex_d::max_n))
         throw size_error("walsh_complex(n): n = " + std::to_string(n) + " is too large; the exact "
                          "algebra is limited to n <= " + std::to_string(max_n) +
-                         " (real order 2^(n+1))");
+                         " (real order 2^(n+1)) and the double-precision path to n <= " +
+                         std::to_string(walsh_complex_d::max_n));
     return std::make_shared<walsh_complex>(unsigned(n));
 }
 
 walsh_complex::walsh_complex(unsigned n) : n_(n) {
-    if (n > max_n)
+    if (n > walsh_complex_d::max_n)
         throw size_error("walsh_complex(n): n = " + std::to_string(n) + " exceeds the limit n <= " +
-                         std::to_string(max_n));
+                         std::to_string(walsh_complex_d::max_n) + " of the double-precision path");
+}
+
+void walsh_complex::require_exact(const char* what) const {
+    if (!exact()) dp::refuse_exact(name(), max_n, what);
+}
+
+bool walsh_complex::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
+    return dp::takes(operands, exact(), name(), max_n, what);
+}
+
+GiNaC::matrix walsh_complex::canonical_matrix(const coeffs& w) const {
+    require_exact("canonical matrix");
+    return algebra::canonical_matrix(w);
 }
 
 std::string walsh_complex::name() const { return "walsh_complex(" + std::to_string(n_) + ")"; }
@@ -58,6 +75,8 @@ coeffs walsh_complex::i0() const { return basis_vector(size()); }
 coeffs walsh_complex::multiply(const coeffs& a, const coeffs& b) const {
     check_size(a, "walsh_complex product");
     check_size(b, "walsh_complex product");
+    if (takes_double_path({&a, &b}, "product"))
+        return dp::from_doubles(walsh_complex_d(n_).multiply(dp::to_doubles(a), dp::to_doubles(b)));
     std::vector<cx> y = wm::complex_components(a), z = wm::complex_components(b);
     for (std::size_t p = 0; p < y.size(); ++p) y[p] = y[p] * z[p];
     return wm::from_complex_components(std::move(y));
@@ -119,6 +138,8 @@ std::vector<std::size_t> ranks_of(const std::vector<cx>& y) {
 
 std::vector<std::size_t> walsh_complex::zero_divisor_ranks(const coeffs& w) const {
     check_size(w, "zero-divisor ranks");
+    if (takes_double_path({&w}, "zero divisor ranks"))
+        return walsh_complex_d(n_).zero_divisor_ranks(dp::to_doubles(w));
     return ranks_of(wm::complex_components(w));
 }
 
@@ -127,6 +148,7 @@ bool walsh_complex::is_zero_divisor(const coeffs& w) const { return !zero_diviso
 // det [w] = prod_p |y_p|^2 = prod_p (c_p^2 + d_p^2).
 ex walsh_complex::determinant(const coeffs& w) const {
     check_size(w, "determinant");
+    require_exact("determinant");
     ex d = 1;
     for (const auto& z : wm::complex_components(w)) d = d * z.norm2();
     return tidy(d);
@@ -135,6 +157,7 @@ ex walsh_complex::determinant(const coeffs& w) const {
 // Real form: each component y_p gives the roots y_p and conj y_p.
 ex walsh_complex::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "characteristic polynomial");
+    require_exact("characteristic polynomial");
     ex p = 1;
     for (const auto& z : wm::complex_components(w))
         p = guarded_expand(p * (X * X - 2 * z.re * X + z.norm2()), "characteristic polynomial");
@@ -144,6 +167,7 @@ ex walsh_complex::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
 // Semisimple: product of the distinct real irreducible factors.
 ex walsh_complex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "minimal polynomial");
+    require_exact("minimal polynomial");
     std::vector<ex> factors;
     for (const auto& z : wm::complex_components(w)) {
         const ex f = !is_nonzero_generic(z.im, "minimal polynomial") ? ex(X - z.re) : ex(X * X - 2 * z.re * X + z.norm2());
@@ -160,6 +184,7 @@ ex walsh_complex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
 // Components y_p -> 1/y_p = conj(y_p)/|y_p|^2.
 coeffs walsh_complex::inverse(const coeffs& w) const {
     check_size(w, "inverse");
+    if (takes_double_path({&w}, "inverse")) return dp::from_doubles(walsh_complex_d(n_).inverse(dp::to_doubles(w)));
     std::vector<cx> y = wm::complex_components(w);
     const auto r = ranks_of(y);
     if (!r.empty()) throw_zero_divisor(name(), "inverse", r);
@@ -173,6 +198,10 @@ coeffs walsh_complex::inverse(const coeffs& w) const {
 // exp(w t): y_p -> e^{c_p t} (cos d_p t + i0 sin d_p t) (III.3.44 on complex components).
 coeffs walsh_complex::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
+    const coeffs tc{t};
+    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
+        return dp::from_doubles(walsh_complex_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
+    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
     std::vector<cx> y = wm::complex_components(w);
     for (auto& z : y) {
         const ex e = exp_scalar(tidy(z.re * t));
@@ -184,6 +213,7 @@ coeffs walsh_complex::exp(const coeffs& w, const ex& t) const {
 // (III.3.64-67) u = sum_p (ln rho_p e_p + theta_p i0 e_p).
 coeffs walsh_complex::log(const coeffs& w) const {
     check_size(w, "log");
+    if (takes_double_path({&w}, "log")) return dp::from_doubles(walsh_complex_d(n_).log(dp::to_doubles(w)));
     std::vector<cx> y = wm::complex_components(w);
     const auto r = ranks_of(y);
     if (!r.empty()) throw_zero_divisor(name(), "log", r);

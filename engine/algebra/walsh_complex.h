@@ -23,8 +23,14 @@ public:
     /// Largest n accepted for the exact algebra (real order 2^{n+1}).
     static constexpr unsigned max_n = 15;
 
+    /// W* of real order 2^{n+1}; throws size_error for n > walsh_complex_d::max_n.
+    /// Float elements take the double path (walsh_complex_d; algebra/double_path.h),
+    /// and above max_n the algebra is double-precision only.
     static algebra_ptr make(long n);
     explicit walsh_complex(unsigned n);
+    /// n <= max_n: exact coordinates are allowed.
+    bool exact() const { return n_ <= max_n; }
+    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
 
     unsigned n() const { return n_; }
     /// Number of components 2^n (the complex order of W*).
@@ -62,6 +68,8 @@ public:
     coeffs i0() const;
 
 private:
+    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
+    void require_exact(const char* what) const;
     unsigned n_;
 };
 

@@ -30,7 +30,8 @@ void register_walsh_builtins(registry& r) {
                   {"walsh", "walsh(n)",
                    "The Walsh algebra W of order 2^n (dyadic group algebra): basis w_p = "
                    "u_0^p_0 ... u_(n-1)^p_(n-1), w_p w_q = w_(p xor q), p_0 the most significant "
-                   "bit (u_k = w_(2^(n-1-k))). n <= 16.",
+                   "bit (u_k = w_(2^(n-1-k))). Exact for n <= 16; elements with float coordinates (1.5, not 3/2) "
+                   "are computed in double precision, and for 16 < n <= 26 the algebra is double-precision only.",
                    "(III.3.3, III.3.6)", "walsh(3)", sec, 1, 1, {}},
                   [](const std::vector<value>& args, context&, const builtin& b) -> value {
                       return value(walsh::make(arg_int(args, 0, b, 0, 1L << 30)));
@@ -39,7 +40,8 @@ void register_walsh_builtins(registry& r) {
                   {"walsh_complex", "walsh_complex(n)",
                    "The complex extension W* of the Walsh algebra in real form, order 2^(n+1): "
                    "basis w_p, i0*w_p, coordinates [a_0..a_(2^n-1), b_0..b_(2^n-1)]. Every "
-                   "non-zero-divisor has a logarithm here. n <= 15.",
+                   "non-zero-divisor has a logarithm here. Exact for n <= 15; elements with float coordinates are "
+                   "computed in double precision, and for 15 < n <= 25 the algebra is double-precision only.",
                    "(III.3.45-53, III.3.64-67)", "log(element(walsh_complex(1), [-1, 0, 0, 0]))",
                    sec, 1, 1, {}},
                   [](const std::vector<value>& args, context&, const builtin& b) -> value {

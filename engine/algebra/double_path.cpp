@@ -1,0 +1,52 @@
+// symrep/algebra/double_path.cpp -- see double_path.h.
+#include "algebra/double_path.h"
+
+#include "core/error.h"
+
+namespace symrep::double_path {
+
+using GiNaC::ex;
+
+bool is_real_number(const ex& x) {
+    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real();
+}
+
+namespace {
+bool is_float(const ex& x) { return is_real_number(x) && !GiNaC::ex_to<GiNaC::numeric>(x).is_rational(); }
+}  // namespace
+
+void refuse_exact(const std::string& algebra_name, unsigned max_exact, const char* what) {
+    throw size_error(std::string(what) + " in " + algebra_name + ": the exact algebra is limited to n <= " +
+                     std::to_string(max_exact) + "; above it " + algebra_name +
+                     " computes in double precision only (products, inverse, exp, log, zero divisors of elements "
+                     "with numeric coordinates)");
+}
+
+bool takes(std::initializer_list<const coeffs*> operands, bool exact, const std::string& algebra_name,
+           unsigned max_exact, const char* what) {
+    bool numeric = true, any_float = false;
+    for (const coeffs* c : operands)
+        for (const ex& x : *c) {
+            numeric = numeric && is_real_number(x);
+            any_float = any_float || is_float(x);
+        }
+    if (!exact && !numeric)
+        throw size_error(std::string(what) + " in " + algebra_name +
+                         ": an element with symbolic coordinates needs the exact algebra, which is limited to n <= " +
+                         std::to_string(max_exact) + "; above it the coordinates must be numbers (double precision)");
+    return numeric && (any_float || !exact);
+}
+
+std::vector<double> to_doubles(const coeffs& c) {
+    std::vector<double> v(c.size());
+    for (std::size_t k = 0; k < c.size(); ++k) v[k] = GiNaC::ex_to<GiNaC::numeric>(c[k]).to_double();
+    return v;
+}
+
+coeffs from_doubles(const std::vector<double>& v) {
+    coeffs c(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) c[k] = v[k] == 0 ? ex(0) : ex(GiNaC::numeric(v[k]));
+    return c;
+}
+
+}  // namespace symrep::double_path
