@@ -481,3 +481,29 @@ TEST(DoublePathsIssue13, WalshFloatElementsTakeTheDoublePath) {
     EXPECT_FALSE(dynamic_cast<const walsh_complex&>(*walsh_complex::make(18)).exact());
     EXPECT_THROW(walsh_complex::make(walsh_complex_d::max_n + 1), size_error);
 }
+
+// Sobrero: float elements take sobrero_d (products, inverse, exp, zero divisors;
+// 1e-12 relative against the exact path evaluated, the truncated series of
+// length n + 1 = 3 adding no more than a few eps), sobrero(1000) is
+// double-precision only, and log there is refused (sobrero_d has none).
+TEST(DoublePathsIssue13, SobreroFloatElementsTakeTheDoublePath) {
+    const auto S = sobrero::make(2);
+    const coeffs xf{GiNaC::numeric(1.5), GiNaC::numeric(0.25), GiNaC::numeric(0.5), GiNaC::numeric(0.125), 1, 2},
+        xe{GiNaC::numeric(3, 2), GiNaC::numeric(1, 4), GiNaC::numeric(1, 2), GiNaC::numeric(1, 8), 1, 2};
+    for (const auto& [f, e] : {std::pair{S->exp(xf, 1), S->exp(xe, 1)}, std::pair{S->inverse(xf), S->inverse(xe)},
+                               std::pair{S->multiply(xf, xf), S->multiply(xe, xe)}})
+        for (std::size_t k = 0; k < f.size(); ++k) {
+            ASSERT_TRUE(f[k].is_zero() || !GiNaC::ex_to<GiNaC::numeric>(f[k]).is_rational()) << k << ": " << f[k];
+            const double want = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e[k])).to_double();
+            EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(f[k]).to_double(), want, 1e-12 * (1 + std::abs(want))) << k;
+        }
+    const auto T = sobrero::make(1000);
+    coeffs z = T->zero();
+    z[0] = GiNaC::numeric(2.0);
+    z[1] = 1;  // eps
+    const coeffs one = T->multiply(T->inverse(z), z);
+    for (std::size_t k = 0; k < T->dim(); k += 97)
+        EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(one[k])).to_double(), k == 0 ? 1.0 : 0.0, 1e-12) << k;
+    EXPECT_THROW(T->log(z), size_error);
+    EXPECT_THROW(sobrero::make(sobrero_d::max_n + 1), size_error);
+}

@@ -18,8 +18,7 @@ bool is_float(const ex& x) { return is_real_number(x) && !GiNaC::ex_to<GiNaC::nu
 void refuse_exact(const std::string& algebra_name, unsigned max_exact, const char* what) {
     throw size_error(std::string(what) + " in " + algebra_name + ": the exact algebra is limited to n <= " +
                      std::to_string(max_exact) + "; above it " + algebra_name +
-                     " computes in double precision only (products, inverse, exp, log, zero divisors of elements "
-                     "with numeric coordinates)");
+                     " computes in double precision only, on elements with numeric coordinates (see its help)");
 }
 
 bool takes(std::initializer_list<const coeffs*> operands, bool exact, const std::string& algebra_name,

@@ -5,7 +5,9 @@
 
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
+#include "algebra/double_path.h"
 #include "algebra/sobrero_kernel.h"
+#include "algebra/walsh_double.h"
 #include "core/error.h"
 #include "core/expression_size.h"
 
@@ -13,6 +15,7 @@ namespace symrep {
 
 using GiNaC::ex;
 namespace sm = sobrero_math;
+namespace dp = double_path;
 
 namespace {
 
@@ -39,14 +42,28 @@ bool nonnegative(const ex& x, const std::string& what) {
 
 algebra_ptr sobrero::make(long n) {
     if (n < 0) throw domain_error("sobrero(n): n must be >= 0, got " + std::to_string(n));
-    if (n > long(max_n))
+    if (n > long(sobrero_d::max_n))
         throw size_error("sobrero(n): n = " + std::to_string(n) + " is too large; the exact algebra "
-                         "is limited to n <= " + std::to_string(max_n) + " (order 2(n+1))");
+                         "is limited to n <= " + std::to_string(max_n) + " (order 2(n+1)) and the "
+                         "double-precision path to n <= " + std::to_string(sobrero_d::max_n));
     return std::make_shared<sobrero>(unsigned(n));
 }
 
+void sobrero::require_exact(const char* what) const {
+    if (!exact()) dp::refuse_exact(name(), max_n, what);
+}
+
+bool sobrero::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
+    return dp::takes(operands, exact(), name(), max_n, what);
+}
+
+GiNaC::matrix sobrero::canonical_matrix(const coeffs& w) const {
+    require_exact("canonical matrix");
+    return algebra::canonical_matrix(w);
+}
+
 sobrero::sobrero(unsigned n) : n_(n) {
-    if (n > max_n)
+    if (n > sobrero_d::max_n)
         throw size_error("sobrero(n): n = " + std::to_string(n) + " exceeds the limit n <= " +
                          std::to_string(max_n));
 }
@@ -67,12 +84,15 @@ std::string sobrero::basis_name(std::size_t k) const {
 coeffs sobrero::multiply(const coeffs& a, const coeffs& b) const {
     check_size(a, "sobrero product");
     check_size(b, "sobrero product");
+    if (takes_double_path({&a, &b}, "product"))
+        return dp::from_doubles(sobrero_d(n_).multiply(dp::to_doubles(a), dp::to_doubles(b)));
     return sm::to_coords(sm::multiply(sm::from_coords(a), sm::from_coords(b)));
 }
 
 // det [w] = |xi_0|^{2(n+1)}: the constant term of (III.2.12).
 ex sobrero::determinant(const coeffs& w) const {
     check_size(w, "determinant");
+    require_exact("determinant");
     const std::size_t m = n_ + 1;
     return tidy(GiNaC::pow(w[0] * w[0] + w[m] * w[m], int(m)));
 }
@@ -80,6 +100,7 @@ ex sobrero::determinant(const coeffs& w) const {
 // (III.2.12) p(X) = (X^2 - 2 a_0 X + a_0^2 + b_0^2)^{n+1}, returned expanded.
 ex sobrero::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "characteristic polynomial");
+    require_exact("characteristic polynomial");
     const std::size_t m = n_ + 1;
     const ex a0 = w[0], b0 = w[m];
     return guarded_expand(GiNaC::pow(X * X - 2 * a0 * X + a0 * a0 + b0 * b0, int(m)), "characteristic polynomial");
@@ -90,6 +111,7 @@ ex sobrero::charpoly(const coeffs& w, const GiNaC::symbol& X) const {
 // minimal polynomial is ((X - xi_0)(X - conj xi_0))^m, or (X - a_0)^m if b_0 = 0.
 ex sobrero::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     check_size(w, "minimal polynomial");
+    require_exact("minimal polynomial");
     const std::size_t m = n_ + 1;
     std::size_t k0 = 0;
     for (std::size_t k = 1; k < m && k0 == 0; ++k)
@@ -105,6 +127,8 @@ ex sobrero::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
 // (III.2.13) w is a zero divisor iff a_0 = b_0 = 0.
 bool sobrero::is_zero_divisor(const coeffs& w) const {
     check_size(w, "zero-divisor test");
+    // (III.2.13) in doubles: |xi_0| <= 1e-12 max |xi_k|
+    if (takes_double_path({&w}, "zero-divisor test")) return sobrero_d(n_).is_zero_divisor(dp::to_doubles(w));
     return !is_nonzero_generic(w[0], "zero divisor test in " + name()) &&
            !is_nonzero_generic(w[n_ + 1], "zero divisor test in " + name());
 }
@@ -125,6 +149,8 @@ namespace {
 
 // w^{-1} = xi_0^{-1} sum_{k=0}^{n} (-N/xi_0)^k.
 coeffs sobrero::inverse(const coeffs& w) const {
+    check_size(w, "inverse");
+    if (takes_double_path({&w}, "inverse")) return dp::from_doubles(sobrero_d(n_).inverse(dp::to_doubles(w)));
     if (is_zero_divisor(w)) throw_nilpotent(*this, "inverse");
     return sm::to_coords(sm::inverse(sm::from_coords(w)));
 }
@@ -132,11 +158,16 @@ coeffs sobrero::inverse(const coeffs& w) const {
 // exp(w t) = e^{xi_0 t} sum_{k=0}^{n} N^k t^k / k!, a closed form in t.
 coeffs sobrero::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
+    const coeffs tc{t};
+    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
+        return dp::from_doubles(sobrero_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
+    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
     return sm::to_coords(sm::exp(sm::from_coords(w), t));
 }
 
 // log w = log xi_0 + sum_{k=1}^{n} (-1)^{k+1} (N/xi_0)^k / k (principal log of xi_0).
 coeffs sobrero::log(const coeffs& w) const {
+    require_exact("log");  // sobrero_d has no log: exact (or float GiNaC) arithmetic up to max_n
     if (is_zero_divisor(w)) throw_nilpotent(*this, "log");
     return sm::to_coords(sm::log(sm::from_coords(w)));
 }
@@ -144,6 +175,7 @@ coeffs sobrero::log(const coeffs& w) const {
 // (III.2.16-18) A_k = sqrt(a_k^2 + b_k^2), phi_k = atan2(b_k, a_k) taken in [0, 2 pi).
 std::pair<coeffs, coeffs> sobrero::semiexponential(const coeffs& w) const {
     check_size(w, "semiexponential form");
+    require_exact("semiexponential form");
     const std::size_t m = n_ + 1;
     coeffs rho = zero(), theta = zero();
     for (std::size_t k = 0; k < m; ++k) {

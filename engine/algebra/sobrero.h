@@ -35,9 +35,15 @@ public:
     /// Largest n accepted by make() for the exact algebra.
     static constexpr unsigned max_n = 512;
 
-    /// The algebra S of order 2(n+1); throws size_error for n > max_n.
+    /// The algebra S of order 2(n+1); throws size_error for n > sobrero_d::max_n.
+    /// Float elements take the double path (sobrero_d: products, inverse, exp, zero
+    /// divisors; algebra/double_path.h), and above max_n the algebra is
+    /// double-precision only (exact-only operations, log among them, refused).
     static algebra_ptr make(long n);
     explicit sobrero(unsigned n);
+    /// n <= max_n: exact coordinates are allowed.
+    bool exact() const { return n_ <= max_n; }
+    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
 
     /// Nilpotency order parameter n (eps^{n+1} = 0).
     unsigned n() const { return n_; }
@@ -82,6 +88,8 @@ public:
     coeffs eps() const;
 
 private:
+    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
+    void require_exact(const char* what) const;
     unsigned n_;
 };
 

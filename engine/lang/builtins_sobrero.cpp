@@ -41,7 +41,9 @@ void register_sobrero_builtins(registry& r) {
                   {"sobrero", "sobrero(n)",
                    "The generalized Sobrero algebra S = C (x) R[eps]/(eps^(n+1)) of order 2(n+1), "
                    "with basis 1, eps, ..., eps^n, j, j*eps, ..., j*eps^n; coordinates "
-                   "[a_0..a_n, b_0..b_n] for w = sum (a_k + j b_k) eps^k. n <= 512.",
+                   "[a_0..a_n, b_0..b_n] for w = sum (a_k + j b_k) eps^k. Exact for n <= 512; elements with float "
+                   "coordinates (1.5, not 3/2) take the double path for products, inverse, exp and zero divisors, "
+                   "and for 512 < n <= 4096 the algebra is double-precision only (no log there).",
                    "(III.2.4-6)", "sobrero(2)", sec, 1, 1, {}},
                   [](const std::vector<value>& args, context&, const builtin& b) -> value {
                       return value(sobrero::make(arg_int(args, 0, b, 0, 1L << 30)));
