@@ -415,7 +415,8 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
             parameter_values exact = v;
             for (auto& [k, x] : exact.vectors) x = num::decimal_floats_of(x);
             for (auto& [k, x] : exact.scalars) x = num::decimal_floats_of(x);
-            out.x = evaluate_with_guard(put_values(num::decimal_floats_of(out.model_solution), exact));
+            // a numeric frequency may come out negative (1 - q of a damped pendulum): sin(-1.9 t) -> -sin(1.9 t)
+            out.x = normalize_trig_signs(evaluate_with_guard(put_values(num::decimal_floats_of(out.model_solution), exact)));
         }
     } catch (const domain_error&) {
         if (out.model.deferred_values.empty()) throw;
@@ -430,7 +431,7 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
         for (ex& x : Q.initial) x = num::exact_floats_of(x);
         scene_solution again = solve(Q, exact);
         again.model.floats_made_exact = out.model.deferred_values;
-        again.x = GiNaC::evalf(again.x);
+        again.x = normalize_trig_signs(GiNaC::evalf(again.x));
         return again;
     }
     return out;
