@@ -277,3 +277,22 @@ TEST(EqualityIssue13, DecisionsOnUnprovedConstantsAreRefusedNotGuessed) {
     EXPECT_EQ(out.str().find("X^2"), std::string::npos) << out.str();
     EXPECT_NE(s.run_string("1/element(multicomplex(0), [z, 0])", "t"), 0);
 }
+
+// == on vectors must not fall back to comparing trees: (r0 . [0, 0, 1]) against
+// ([0, 0, 1] . r0) and a vector against the list [x, y, z] were answered false;
+// X - X for a computed vector X gave "cannot combine a matrix".
+TEST(EqualityIssue13, VectorsAgainstListsAndDotsOfLiteralsAreDecided) {
+    std::ostringstream out, err;
+    session s(out, err);
+    ASSERT_EQ(s.run_string("vector r0\nW := [0, 0, 2*cos(t) - 1/2]\nX := W'\n"
+                           "a := (r0 . [0, 0, 1]) == ([0, 0, 1] . r0)\nb := X == [0, 0, -2*sin(t)]\n"
+                           "c := [0, 0, -2*sin(t)] == X\nd := X == [0, 0, 2*sin(t)]\ne := X - [0, 0, -2*sin(t)]",
+                           "t"),
+              0)
+        << err.str();
+    EXPECT_TRUE(s.evaluate("a").as_bool());
+    EXPECT_TRUE(s.evaluate("b").as_bool());
+    EXPECT_TRUE(s.evaluate("c").as_bool());
+    EXPECT_FALSE(s.evaluate("d").as_bool());
+    EXPECT_TRUE(s.evaluate("e == [0, 0, 0]").as_bool());
+}

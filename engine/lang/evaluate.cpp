@@ -205,6 +205,16 @@ value session::eval_inner(const node& n) {
             if (n.text == "I") return ex(GiNaC::I);
             if (n.text == "Euler") return ex(GiNaC::Euler);
             if (n.text == "Catalan") return ex(GiNaC::Catalan);
+            // w' of a name w that holds a value: its derivative in t (a given w(t)
+            // inside ode(...), VI.2-VI.3); w'' the second, and so on
+            if (const auto q = n.text.find('\''); q != std::string::npos && q > 0 &&
+                                                  n.text.find_first_not_of('\'', q) == std::string::npos) {
+                if (const value* base = get(n.text.substr(0, q)); base && (base->is_ex() || base->is_list())) {
+                    ex d = base->is_list() ? vector_operand("'", *base, "derivative") : base->as_ex();
+                    for (std::size_t k = q; k < n.text.size(); ++k) d = diff_t(d, symbol("t"));
+                    return d;
+                }
+            }
             return ex(symbol(n.text));
         }
         case node::result: {

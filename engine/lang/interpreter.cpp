@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "mechanics/fixed_axis.h"
 #include "scalar/scalar.h"
 #include "syntax/parser.h"
 #include "output/printer.h"
@@ -518,7 +519,16 @@ value session::ode_form(const node& n) {
         build(P.is_vector);
     }
     // read once, now: errors point at ode(...), and solve() uses the result
-    P.reduced = std::make_shared<const mechanics::operator_form>(mechanics::reduce(P));
+    try {
+        P.reduced = std::make_shared<const mechanics::operator_form>(mechanics::reduce(P));
+    } catch (const domain_error&) {
+        // a rotating frame with w(t) = s(t) u (VI.2): solved by reduction to the inertial problem
+        std::string why;
+        auto fa = mechanics::read_fixed_axis(P, &why);
+        if (!fa && !why.empty()) throw domain_error(why);
+        if (!fa) throw;
+        P.fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fa));
+    }
     return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
 }
 

@@ -72,6 +72,11 @@ bool has_symbolic(const ex& e) {
 ex finish(const ex& e, const ex& a, const ex& b, const std::string& op) {
     if (!is_a<GiNaC::matrix>(a) && !is_a<GiNaC::matrix>(b)) return e;
     const ex r = e.evalm();
+    if (r.is_zero() && (op == "+" || op == "-") && is_a<GiNaC::matrix>(a) && is_a<GiNaC::matrix>(b)) {
+        // M - M: GiNaC cancels the two equal terms to the number 0 before evalm()
+        const GiNaC::matrix& m = ex_to<GiNaC::matrix>(a);
+        return GiNaC::matrix(m.rows(), m.cols());
+    }
     if (!is_a<GiNaC::matrix>(r)) {
         if (op == "^" && is_a<GiNaC::matrix>(b))
             throw type_error("a matrix cannot be an exponent (operator '^')");
@@ -311,9 +316,12 @@ equality compare_values(const value& a, const value& b) {
     if (a.is_ex() && b.is_ex()) {
         const ex& x = a.as_ex();
         const ex& y = b.as_ex();
+        // vectors and scalars of vectors, literals inside dot products too ((r0 . [0, 0, 1])
+        // against ([0, 0, 1] . r0) was compared as trees and answered false): exact, by components
+        if ((is_vector_ex(a) || is_vector_ex(b)) && !is_a<GiNaC::relational>(x) && !is_a<GiNaC::relational>(y))
+            return decide_vectors(x, y);
         if (!is_a<GiNaC::matrix>(x) && !is_a<GiNaC::matrix>(y) && (has_matrix(x) || has_matrix(y)))
             return known(x.is_equal(y));  // matrices inside relations and the like: never subtracted from numbers
-        if (is_vector_ex(a) || is_vector_ex(b)) return decide_vectors(x, y);  // exact, by components
         if (is_a<GiNaC::matrix>(x) || is_a<GiNaC::matrix>(y)) {
             if (!is_a<GiNaC::matrix>(x) || !is_a<GiNaC::matrix>(y)) return known(false);
             const auto& m = ex_to<GiNaC::matrix>(x);
@@ -358,6 +366,15 @@ equality compare_values(const value& a, const value& b) {
         }
         return all_of(parts);
     }
+    // a list [x, y, z] against a vector expression: the list is the literal
+    if (a.is_list() && b.is_ex() && (is_vector_ex(b) || is_column3(b))) {
+        try {
+            return compare_values(value(vector_operand("==", a, "left")), b);
+        } catch (const error&) {
+            return known(false);  // not three scalars: not a vector
+        }
+    }
+    if (a.is_ex() && b.is_list()) return compare_values(b, a);
     if (a.is_bool() && b.is_bool()) return known(a.as_bool() == b.as_bool());
     if (a.is_string() && b.is_string()) return known(a.as_string() == b.as_string());
     if (a.is_algebra() && b.is_algebra()) return known(a.as_algebra()->name() == b.as_algebra()->name());

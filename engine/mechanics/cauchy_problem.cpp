@@ -1,5 +1,6 @@
 // symrep/mechanics/cauchy_problem.cpp
 #include "mechanics/cauchy_problem.h"
+#include "mechanics/fixed_axis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -441,6 +442,7 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 }
 
 ex solve(const cauchy_problem& P) {
+    if (!P.reduced && P.fixed_axis) return solve_fixed_axis(P, *P.fixed_axis);
     const operator_form F = P.reduced ? *P.reduced : reduce(P);
     const rotation_operator_algebra R(F.Omega);
     const ex x = vector_solution(P, F, solve(F.ode, R, P.t));

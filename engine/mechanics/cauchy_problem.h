@@ -35,6 +35,7 @@
 namespace symrep::mechanics {
 
 struct operator_form;
+struct fixed_axis_form;
 
 struct cauchy_problem {
     std::string name;                  ///< the unknown's name, e.g. "r"
@@ -45,6 +46,9 @@ struct cauchy_problem {
     bool is_vector = true;
     /// reduce(*this), kept by whoever made the problem so that solve() does not read it again.
     std::shared_ptr<const operator_form> reduced;
+    /// When the operator is not constant but the problem is a fixed-axis rotating-frame
+    /// problem (fixed_axis.h, VI.2): its reading, and solve() reduces it to the inertial one.
+    std::shared_ptr<const fixed_axis_form> fixed_axis;
 
     /// M, the order.
     std::size_t order() const { return unknowns.size() - 1; }

@@ -142,6 +142,14 @@ std::string product_text(const GiNaC::numeric& coef_in, const std::vector<ex>& f
         if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
             ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
             den.push_back(factor_text(GiNaC::pow(f.op(0), -f.op(1))));
+        } else if (kind(f) && is_a<GiNaC::add>(f)) {
+            // a vector sum: its sign normalized like a scalar sum's above
+            std::vector<std::string> terms = add_terms(f);
+            if (!terms.empty() && terms[0].rfind("-", 0) == 0) {
+                for (auto& t : terms) t = toggle_sign(t);
+                coef = -coef;
+            }
+            vec = "(" + join_terms(terms) + ")";
         } else if (kind(f)) {
             vec = factor_text(f);
         } else {
@@ -216,8 +224,21 @@ std::vector<std::string> add_terms(const ex& e) {
     for (std::size_t i = 0; i < e.nops(); ++i) {
         const ex t = e.op(i);
         if (kind(t)) {
-            const auto [s, v] = split_scalar(t);
-            std::string k = str(v);
+            const auto [s0, v] = split_scalar(t);
+            ex s = s0;
+            std::string k;
+            if (is_a<GiNaC::add>(v)) {
+                // a vector sum as the factor: its sign normalized (leading term without
+                // '-'), as GiNaC's choice follows its internal order
+                std::vector<std::string> vt = add_terms(v);
+                if (!vt.empty() && vt[0].rfind("-", 0) == 0) {
+                    for (auto& x : vt) x = toggle_sign(x);
+                    s = -s;
+                }
+                k = join_terms(vt);
+            } else {
+                k = str(v);
+            }
             auto it = groups.find(k);
             if (it == groups.end()) groups.emplace(k, group{v, k, s});
             else it->second.coef += s;

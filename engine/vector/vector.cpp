@@ -367,9 +367,16 @@ ex vtriple_deriv(const ex& a, const ex& b, const ex& c, const GiNaC::symbol& s) 
 
 }  // namespace
 
-REGISTER_FUNCTION(vcross, eval_func(vcross_eval).expl_derivative_func(vcross_deriv).set_name("cross"))
-REGISTER_FUNCTION(vdot, eval_func(vdot_eval).expl_derivative_func(vdot_deriv).set_name("dot"))
-REGISTER_FUNCTION(vtriple, eval_func(vtriple_eval).expl_derivative_func(vtriple_deriv).set_name("triple"))
+// Commutative results: without it a GiNaC function takes the return type of its first
+// argument, so dot([0, 0, 1], v0) was non-commutative like a matrix, and its product with
+// a literal became an ncmul that kind() rejects -- depending on the argument order,
+// which follows GiNaC's hashes (a failure in some runs only).
+REGISTER_FUNCTION(vcross, eval_func(vcross_eval).expl_derivative_func(vcross_deriv).set_name("cross").set_return_type(
+                              GiNaC::return_types::commutative))
+REGISTER_FUNCTION(vdot, eval_func(vdot_eval).expl_derivative_func(vdot_deriv).set_name("dot").set_return_type(
+                            GiNaC::return_types::commutative))
+REGISTER_FUNCTION(vtriple, eval_func(vtriple_eval).expl_derivative_func(vtriple_deriv).set_name("triple").set_return_type(
+                               GiNaC::return_types::commutative))
 
 // ---------------------------------------------------------------- wrappers
 ex cross(const ex& a, const ex& b) { return vcross(a, b); }
