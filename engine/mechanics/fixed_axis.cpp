@@ -49,27 +49,33 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         if (why && varying) *why = reason;
         return std::nullopt;
     };
-    if (!P.is_vector || P.order() != 2 || P.initial.size() != 2) return std::nullopt;
+    const std::size_t M = P.order();
+    if (!P.is_vector || (M != 1 && M != 2) || P.initial.size() != M) return std::nullopt;
     const ex& t = P.t;
-    const ex &x = P.unknowns[0], &x1 = P.unknowns[1], &x2 = P.unknowns[2];
+    // xM the highest derivative, xc the one the cross terms act on (M w x xc)
+    const ex &x = P.unknowns[0], &xc = P.unknowns[M - 1], &xM = P.unknowns[M];
+    // the rotating-frame operator, as text for messages
+    const std::string op = M == 2 ? P.unknown_name(2) + " + 2 w x " + P.unknown_name(1) + " + w' x " + P.name +
+                                        " + w x (w x " + P.name + ")"
+                                  : P.unknown_name(1) + " + w x " + P.name;
     try {
         const ex E = P.expression, f = keep_only(P, E, std::size_t(-1));
-        // m x'': a constant scalar leading coefficient
-        const auto m = multiple_of(P, keep_only(P, E, 2) - f, x2);
+        // m x^(M): a constant scalar leading coefficient
+        const auto m = multiple_of(P, keep_only(P, E, M) - f, xM);
         if (!m || m->is_zero() || m->has(t)) return std::nullopt;
-        // the cross terms on x': sum c_j a_j x x' = 2 m w x x'
+        // the cross terms on x^(M-1): sum c_j a_j x x^(M-1) = M m w x x^(M-1)
         ex cross1 = 0;
-        for (const vector_term& term : canonical_terms(keep_only(P, E, 1) - f)) {
+        for (const vector_term& term : canonical_terms(keep_only(P, E, M - 1) - f)) {
             const ex& mono = term.monomial;
             if (has_unknown(P, term.coefficient)) return std::nullopt;
-            if (!is_ex_the_function(mono, vcross)) continue;  // c x': in the remainder below
-            if (mono.op(1).is_equal(x1) && !has_unknown(P, mono.op(0))) cross1 += term.coefficient * mono.op(0);
-            else if (mono.op(0).is_equal(x1) && !has_unknown(P, mono.op(1))) cross1 -= term.coefficient * mono.op(1);
-            else return std::nullopt;
+            if (!is_ex_the_function(mono, vcross)) continue;  // c x^(M-1): in the remainder below
+            if (mono.op(1).is_equal(xc) && !has_unknown(P, mono.op(0))) cross1 += term.coefficient * mono.op(0);
+            else if (mono.op(0).is_equal(xc) && !has_unknown(P, mono.op(1))) cross1 -= term.coefficient * mono.op(1);
+            else if (M == 2) return std::nullopt;  // (order 1: w x (w x x) and the like are read below)
         }
         if (cross1.is_zero()) return std::nullopt;
         // w = s(t) u with a constant direction u: the first term's coefficient is s
-        std::vector<vector_term> wt = canonical_terms(cross1 / (2 * *m));
+        std::vector<vector_term> wt = canonical_terms(cross1 / (double(M) * *m));
         if (wt.empty()) return std::nullopt;
         for (vector_term& term : wt)  // a literal [0, 0, f(t)]: f(t) [0, 0, 1]
             if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
@@ -81,7 +87,7 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
                 term.monomial = vector_literal(GiNaC::normal(term.monomial.op(0) / c), GiNaC::normal(term.monomial.op(1) / c),
                                                GiNaC::normal(term.monomial.op(2) / c));
             }
-        const ex w0 = cross1 / (2 * *m);
+        const ex w0 = cross1 / (int(M) * *m);
         varying = w0.has(t);
         fixed_axis_form F;
         F.s = GiNaC::normal(wt[0].coefficient);
@@ -96,16 +102,16 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         }
         const ex w = F.s * F.u;
         const std::string form = "the problem has the rotating-frame terms of w(t) = " + to_string(w) + " (" +
-                                 to_string(2 * w) + " x " + P.unknown_name(1) + "), but ";
-        // the rest of E is m (x'' + 2 w x x' + w' x x + w x (w x x)) + k x + F(t)
-        // (with w as the user wrote it, so that literals [0, 0, f(t)] meet their own terms)
-        const ex R = *m * (x2 + 2 * cross(w0, x1) + cross(diff_t(w0, t), x) + cross(w0, cross(w0, x)));
+                                 to_string(int(M) * w) + " x " + P.unknown_name(M - 1) + "), but ";
+        // the rest of E is m (x'' + 2 w x x' + w' x x + w x (w x x)) + k x + F(t), or for
+        // order 1 m (x' + w x x) + k x + F(t) (with w as the user wrote it, so that
+        // literals [0, 0, f(t)] meet their own terms)
+        const ex R = M == 2 ? *m * (xM + 2 * cross(w0, xc) + cross(diff_t(w0, t), x) + cross(w0, cross(w0, x)))
+                            : *m * (xM + cross(w0, x));
         const ex rest = E - R, free = keep_only(P, rest, std::size_t(-1));
-        for (std::size_t k : {std::size_t(1), std::size_t(2)})
+        for (std::size_t k = 1; k <= M; ++k)
             if (!equal(keep_only(P, rest, k) - free, 0))
-                return refuse(form + "beside m (" + P.unknown_name(2) + " + 2 w x " + P.unknown_name(1) + " + w' x " +
-                              P.name + " + w x (w x " + P.name + ")) it has the terms " +
-                              to_string(keep_only(P, rest, k) - free) +
+                return refuse(form + "beside m (" + op + ") it has the terms " + to_string(keep_only(P, rest, k) - free) +
                               " in " + P.unknown_name(k) + " (Thm VI.2.2 reduces the undamped form only)");
         const ex L0 = keep_only(P, rest, 0) - free;
         ex k = 0;
@@ -114,18 +120,17 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         k = GiNaC::normal(k);
         if (has_unknown(P, k) || k.has(t) || !equal(L0 - k * x, 0))
             return refuse(form + "the terms " + to_string(keep_only(P, rest, 0) - free) + " in " + P.name +
-                          " are not the rotating-frame operator (m (" + P.unknown_name(2) + " + 2 w x " +
-                          P.unknown_name(1) + " + w' x " + P.name + " + w x (w x " + P.name +
-                          "))) plus a constant multiple k " + P.name);
+                          " are not the rotating-frame operator (m (" + op + ")) plus a constant multiple k " + P.name);
         if (!free.is_zero() && !equal(cross(F.u, free), 0))  // Q^T F = F needs F along u
             return refuse(form + "the free term " + to_string(free) + " is not along the axis " + to_string(F.u) +
                           " (the inertial problem would have the rotated force Q^T F)");
         // a(t) = |u| int_0^t s
         F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, t).antiderivative().to_ex();
         // the inertial problem m psi'' + k psi + F = 0, psi(0) = r0, psi'(0) = v0 + w(0) x r0
+        // (order 1: m psi' + k psi + F = 0, psi(0) = x0)
         auto I = std::make_shared<cauchy_problem>(P);
-        I->expression = *m * x2 + k * x + free;
-        I->initial = {P.initial[0], P.initial[1] + cross(w.subs(t == 0), P.initial[0])};
+        I->expression = *m * xM + k * x + free;
+        if (M == 2) I->initial = {P.initial[0], P.initial[1] + cross(w.subs(t == 0), P.initial[0])};
         I->reduced = std::make_shared<const operator_form>(reduce(*I));
         F.inertial = std::move(I);
         return F;
