@@ -260,9 +260,10 @@ TEST(CauchyProblem, BadProblemsGetClearMessages) {
         {"vector a, b, r0\node(r'' + a x r' + b x r = 0, r(0) = r0, r'(0) = r0)", "along different vectors"},
         {"vector a, b, r0\node(r'' + a x r' + b x (b x r) = 0, r(0) = r0, r'(0) = r0)", "one K = w x"},
         {"vector a, b, r0\node(r' + a x r + b x r = 0, r(0) = r0)", ""},  // K = (a + b) x
-        {"vector a, b, r0\node(r' + t*(a x r) + b x r = 0, r(0) = r0)", "the coefficient t of a x r depends on t"},
+        {"vector a, b, r0\node(r' + t*(a x r) + b x r = 0, r(0) = r0)", "turns its direction"},
         {"vector r0\node(r' + (r . r)*r = 0, r(0) = r0)", "not linear"},
-        {"vector w, r0\node(r' + t*(w x r) = 0, r(0) = r0)", "depends on t"},
+        {"vector w, r0\node(r' + t*(w x r) = 0, r(0) = r0)", ""},  // a fixed axis, rate t: fixed_axis.h
+        {"vector w, r0\node(r' + t*(w x r) + t*r = 0, r(0) = r0)", "not the rotating-frame operator"},
         {"vector r0\node(r'' + r = 0, r(0) = r0)", "r'' appears"},
         {"vector r0\node(r' = r^2, r(0) = r0)", "r"},
         {"vector r0\node(r' = exp(t^2)*r0, r(0) = r0)", "not a quasi-polynomial"},
