@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -277,7 +278,41 @@ bool problem_has_float(const cauchy_problem& P) {
 
 }  // namespace
 
+// The first additive term of E in which an unknown stands where the equation is not
+// polynomial in it (under a negative or fractional power, inside a function other
+// than the vector products): k r/|r|^3, sin(r), 1/y. Such a term makes the problem
+// nonlinear; substituting 0 for the unknowns (as reduce() does) would divide by 0.
+std::optional<ex> nonlinear_term(const cauchy_problem& P) {
+    auto bad = [&](const ex& e) {
+        for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+            const ex& x = *it;
+            if (GiNaC::is_a<GiNaC::power>(x) && has_any(x.op(0), P.unknowns) &&
+                !(GiNaC::is_a<GiNaC::numeric>(x.op(1)) && GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_pos_integer()))
+                return true;
+            if (GiNaC::is_a<GiNaC::function>(x) && !is_ex_the_function(x, vcross) && !is_ex_the_function(x, vdot) &&
+                !is_ex_the_function(x, vtriple) && has_any(x, P.unknowns))
+                return true;
+        }
+        return false;
+    };
+    const ex& E = P.expression;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(E) ? E.nops() : 1); ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(E) ? E.op(i) : E;
+        if (bad(term)) return term;
+    }
+    return std::nullopt;
+}
+
 operator_form reduce(const cauchy_problem& P) {
+    if (const auto term = nonlinear_term(P)) {
+        const std::string t = text(*term);
+        const bool central = t.find("|" + P.name + "|") != std::string::npos;
+        throw domain_error("the term " + t + " is not linear in " + P.name +
+                           (central ? ": a central force f(|r|) r/|r| (Kepler's k r/|r|^3) has no closed form in t "
+                                      "here; ode() solves linear problems (its reduction to the inertial problem, "
+                                      "Thm VI.3.2.1, is in the library: mechanics/rotating_frame.h)"
+                                    : ": ode() solves linear problems"));
+    }
     if (problem_has_float(P)) {
         cauchy_problem Q = P;
         Q.expression = exact_floats(P.expression);

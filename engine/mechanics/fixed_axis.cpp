@@ -134,8 +134,10 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         I->reduced = std::make_shared<const operator_form>(reduce(*I));
         F.inertial = std::move(I);
         return F;
-    } catch (const error&) {
-        return std::nullopt;  // not this form (a quasi-polynomial, a reading failed): the caller's error stands
+    } catch (const std::exception&) {
+        // not this form (not a quasi-polynomial, a reading failed, 1/|r| at r = 0 of a
+        // nonlinear term): the caller's error stands
+        return std::nullopt;
     }
 }
 
