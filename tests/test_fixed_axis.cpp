@@ -111,3 +111,29 @@ TEST(FixedAxis, ChargeInAFieldOfFixedDirectionVaryingInTime) {
     EXPECT_NE(t.run("ode(m*v' = q*(v x B + [1, 0, 0]), v(0) = v0)"), 0);
     EXPECT_NE(t.err.str().find("not along the axis", before), std::string::npos) << t.err.str();
 }
+
+// Scenes of a fixed-axis problem: solve(P, values) is the general reduction with the
+// values put in (exact values exact, checked exactly; floats evaluated once at the
+// end, checked up to rounding), and eval agrees with the general path (1e-15: both
+// are the same closed form evaluated with the stable evaluator).
+TEST(FixedAxis, ScenesAreTheGeneralSolutionWithTheValuesPutIn) {
+    test_session t;
+    ASSERT_EQ(t.run("vector u, r0, v0\nw := (a + b*sin(c*t))*u\n"
+                    "P := ode(r'' + 2*w x r' + w' x r + w x (w x r) + k^2*r = 0, r(0) = r0, r'(0) = v0)\n"
+                    "vals := [u = [0, 0, 1], a = 1/3, b = 2, c = 3, k = 2, r0 = [1, 0, 0], v0 = [0, 1, 0]]\n"
+                    "s := solve(P, vals)\nfv := [u = [0, 0, 1], a = 0.3, b = 2, c = 3, k = 2, r0 = [1, 0, 0], "
+                    "v0 = [0, 1, 0]]\nsf := solve(P, fv)"),
+              0)
+        << t.err.str();
+    EXPECT_NE(t.out.str().find("reduction to the inertial problem"), std::string::npos) << t.out.str();
+    EXPECT_TRUE(t.val("check(P, s, vals)").as_bool());
+    EXPECT_TRUE(t.val("check(P, sf, fv)").as_bool());
+    for (const char* k : {"0", "1"}) {
+        EXPECT_NEAR(number(t, std::string("eval(s, vals, t = 1)[") + k + "]"),
+                    number(t, std::string("eval(solve(P), vals, t = 1)[") + k + "]"), 1e-15)
+            << k;
+        EXPECT_NEAR(number(t, std::string("eval(sf, fv, t = 1)[") + k + "]"),
+                    number(t, std::string("eval(solve(P), fv, t = 1)[") + k + "]"), 1e-15)
+            << k;
+    }
+}

@@ -1,6 +1,8 @@
 // symrep/mechanics/scene.cpp -- the smallest exact model of a scene (scene.h).
 #include "mechanics/scene.h"
 
+#include "mechanics/fixed_axis.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -301,6 +303,7 @@ scene_model classify(const cauchy_problem& P, const parameter_values& v) {
 }
 
 std::string scene_model::report() const {
+    if (!reduction.empty()) return reduction;
     const rotation_operator_algebra R(Omega);
     const std::string w = axis.is_zero() ? std::string() : paren(axis);  // (q*B/m + 2*w) x: a sum in parentheses
     const std::string wbar = axis.is_zero() ? std::string() : to_string(axis);  // |q*B/m + 2*w|
@@ -394,6 +397,30 @@ ex evaluate_with_guard(const ex& x) {
 }  // namespace
 
 scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
+    if (!P.reduced && P.fixed_axis) {
+        // a frame rotating about a fixed axis (VI.2): the general reduction with the values
+        // put in (floats as the exact numbers they are, the result evaluated once at the end)
+        check_value_names(P, v);
+        scene_solution out;
+        bool floats = false;
+        parameter_values exact = v;
+        for (auto& [k, x] : exact.vectors) {
+            floats = floats || has_float(x);
+            x = num::exact_floats_of(x);
+        }
+        for (auto& [k, x] : exact.scalars) {
+            floats = floats || has_float(x);
+            x = num::exact_floats_of(x);
+        }
+        const fixed_axis_form& fa = *P.fixed_axis;
+        out.model_solution = solve_fixed_axis(P, fa);
+        out.x = put_values(out.model_solution, exact);
+        if (floats) out.x = normalize_trig_signs(GiNaC::evalf(out.x));
+        out.model.reduction = "method: reduction to the inertial problem (Thm VI.2.1.1, VI.2.2): w(t) = (" +
+                              to_string(fa.s) + ") " + to_string(fa.u) + ", r = Q psi, Q the rotation by -(" +
+                              to_string(fa.angle) + ") about " + to_string(fa.u) + "\n";
+        return out;
+    }
     scene_solution out;
     out.model = classify(P, v);
     const rotation_operator_algebra R(out.model.form.Omega);

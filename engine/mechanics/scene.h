@@ -86,6 +86,9 @@ struct scene_model {
     std::string axial_problem, planar_problem; ///< characteristic polynomials solved ("" when not needed)
     solution_method method = solution_method::closed_form;
     std::string method_reason;
+    /// A fixed-axis problem with a varying w (fixed_axis.h): the reduction used, then
+    /// report() says only that (the fields above describe constant-operator scenes).
+    std::string reduction;
 
     /// Per placeholder name, m_P (for solve(operator_ode, ..., factors)).
     placeholder_factors factors() const;
