@@ -137,3 +137,36 @@ TEST(FixedAxis, ScenesAreTheGeneralSolutionWithTheValuesPutIn) {
             << k;
     }
 }
+
+// first_integrals(P) (Thm VI.2.2.3.3, VI.3.140-141): each derivative along the equation
+// (r'' replaced by what the equation gives) is exactly 0, for a varying and for a
+// constant rate; a free term is refused (it does work).
+TEST(FixedAxis, FirstIntegralsHaveZeroDerivativeAlongTheEquation) {
+    using namespace symrep;
+    for (const char* rate : {"(a + b*sin(c*t))", "a"}) {
+        test_session t;
+        ASSERT_EQ(t.run(std::string("vector u, r0, v0\nw := ") + rate +
+                        "*u\nP := ode(m*(r'' + 2*w x r' + w' x r + w x (w x r)) + k*r = 0, r(0) = r0, r'(0) = v0)\n"
+                        "I := first_integrals(P)"),
+                  0)
+            << t.err.str();
+        const auto& P = t.val("P").as_problem();
+        const GiNaC::ex w = t.ex("w"), k = t.ex("k"), m = t.ex("m");
+        const GiNaC::ex &r = P.unknowns[0], &r1 = P.unknowns[1], &r2 = P.unknowns[2];
+        const GiNaC::ex acc =
+            -(2 * cross(w, r1) + cross(diff_t(w, P.t), r) + cross(w, cross(w, r)) + k / m * r);
+        const lang::list I = t.val("I").as_list();
+        ASSERT_EQ(I.size(), 3u);
+        for (const lang::value& v : I) {
+            const GiNaC::ex dI = subs_vectors(diff_t(v.as_ex(), P.t), {{r2, acc}});
+            EXPECT_TRUE(equal(dI, 0)) << rate << ": " << v.as_ex();
+        }
+    }
+    test_session t;
+    ASSERT_EQ(t.run("vector r0, v0\nw := (1 + t)*[0, 0, 1]\n"
+                    "G := ode(r'' + 2*w x r' + w' x r + w x (w x r) = [0, 0, -1], r(0) = r0, r'(0) = v0)"),
+              0)
+        << t.err.str();
+    EXPECT_NE(t.run("first_integrals(G)"), 0);
+    EXPECT_NE(t.err.str().find("does work"), std::string::npos) << t.err.str();
+}

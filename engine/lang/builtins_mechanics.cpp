@@ -20,6 +20,7 @@
 #include "mechanics/rotation_operator_algebra.h"
 #include "mechanics/scene.h"
 #include "numeric/reference.h"
+#include "mechanics/fixed_axis.h"
 #include "numeric/verify.h"
 #include "vector/vector.h"
 
@@ -178,6 +179,26 @@ void register_mechanics_builtins(registry& r) {
         "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
         [](const builtin& b, const args_t&, context&) -> value {
             throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
+        });
+    add(r, "first_integrals", "first_integrals(P)",
+        "The first integrals (Thm VI.2.2.3.3, VI.3.140-141) of a problem in a frame rotating about a fixed axis, "
+        "m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 with w = s(t) u (s constant or not): with "
+        "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. Each is "
+        "constant along every solution (their derivative along the equation is exactly 0).",
+        "(VI.3.140-141)",
+        "vector u, r0, v0\nw := (1 + sin(t))*u\nfirst_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
+        "4*r = 0, r(0) = r0, r'(0) = v0))",
+        1, 1, [](const builtin& b, const args_t& a, context&) -> value {
+            const auto& P = problem_arg(a, 0, b);
+            std::string why;
+            const auto fa = P.fixed_axis ? std::optional<mechanics::fixed_axis_form>(*P.fixed_axis)
+                                         : mechanics::read_fixed_axis(P, &why);
+            if (!fa)
+                throw domain_error(b.name + ": the problem is not m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 "
+                                   "with w = s(t) u" + (why.empty() ? std::string() : " (" + why + ")"));
+            list out;
+            for (const ex& I : mechanics::first_integrals(P, *fa)) out.push_back(value(I));
+            return value(out);
         });
     add(r, "check", "check(P, s [, values])",
         "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "

@@ -126,6 +126,9 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
                           " (the inertial problem would have the rotated force Q^T F)");
         // a(t) = |u| int_0^t s
         F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, t).antiderivative().to_ex();
+        F.m = *m;
+        F.k = k;
+        F.free = free;
         // the inertial problem m psi'' + k psi + F = 0, psi(0) = r0, psi'(0) = v0 + w(0) x r0
         // (order 1: m psi' + k psi + F = 0, psi(0) = x0)
         auto I = std::make_shared<cauchy_problem>(P);
@@ -146,6 +149,19 @@ ex solve_fixed_axis(const cauchy_problem&, const fixed_axis_form& F) {
     const ex psi = solve(*F.inertial);
     const ex U = norm(F.u), c = GiNaC::cos(F.angle), s = GiNaC::sin(F.angle);
     return c * psi - s / U * cross(F.u, psi) + (1 - c) / (U * U) * dot(F.u, psi) * F.u;
+}
+
+std::vector<ex> first_integrals(const cauchy_problem& P, const fixed_axis_form& F) {
+    if (P.order() != 2)
+        throw domain_error("first_integrals: the problem has order " + std::to_string(P.order()) +
+                           "; the first integrals of Thm VI.2.2.3.3 are of the second-order problem");
+    if (!F.free.is_zero())
+        throw domain_error("first_integrals: the free term " + to_string(F.free) +
+                           " does work on " + P.name + ": the energy is not conserved");
+    const ex &r = P.unknowns[0], &r1 = P.unknowns[1];
+    const ex p = r1 + cross(F.s * F.u, r);
+    const ex L = cross(r, p);
+    return {F.m * dot(p, p) / 2 + F.k * dot(r, r) / 2, dot(F.u, L), dot(L, L)};
 }
 
 }  // namespace symrep::mechanics

@@ -26,6 +26,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <ginac/ginac.h>
 
@@ -37,6 +38,8 @@ struct fixed_axis_form {
     GiNaC::ex s;       ///< the signed rate s(t)
     GiNaC::ex u;       ///< the constant direction (not normalized)
     GiNaC::ex angle;   ///< a(t) = |u| int_0^t s(tau) dtau, closed form
+    GiNaC::ex m, k;    ///< the leading coefficient and the constant k of k r
+    GiNaC::ex free;    ///< F(t), along u (0 for none)
     std::shared_ptr<const cauchy_problem> inertial;  ///< m psi'' + k psi + F = 0 with psi's initial values
 };
 
@@ -47,5 +50,12 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
 
 /// r(t) = Q psi(t), coordinate-free. Errors as solve(cauchy_problem).
 GiNaC::ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F);
+
+/// (Thm VI.2.2.3.3, VI.3.140-141) First integrals of a second-order problem without a
+/// free term, in the unknowns r, r' of P: with p = r' + w x r (= Q psi'),
+///   the energy (m |p|^2 + k |r|^2)/2,  u . (r x p),  |r x p|^2
+/// (psi x psi' = Q^T (r x p) is constant, and Q turns about u). Throws domain_error
+/// for a first-order problem or one with a free term F(t).
+std::vector<GiNaC::ex> first_integrals(const cauchy_problem& P, const fixed_axis_form& F);
 
 }  // namespace symrep::mechanics
