@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <utility>
 #include <string>
@@ -140,8 +141,19 @@ public:
     /// Throws size_error naming `what` and the limit when dim() > max_dense_dim.
     void check_dense(const char* what) const;
 
+    /// Whether exact coordinates are allowed: false above a family's exact limit,
+    /// where it computes in double precision only (algebra/double_path.h).
+    virtual bool exact() const { return true; }
+
 protected:
     algebra() = default;
+    /// The largest order with exact coordinates (for the double path's messages).
+    virtual unsigned exact_limit() const { return 0; }
+    /// Whether operands with these coordinates take the family's double path
+    /// (double_path::takes); throws size_error for symbolic coordinates when !exact().
+    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
+    /// Throws size_error naming the exact limit when !exact().
+    void require_exact(const char* what) const;
 };
 
 }  // namespace symrep

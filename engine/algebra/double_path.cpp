@@ -49,3 +49,16 @@ coeffs from_doubles(const std::vector<double>& v) {
 }
 
 }  // namespace symrep::double_path
+
+namespace symrep {
+
+bool algebra::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
+    return double_path::takes(operands, exact(), name(), exact_limit(), what);
+}
+
+void algebra::require_exact(const char* what) const {
+    if (!exact()) double_path::refuse_exact(name(), exact_limit(), what);
+}
+
+}  // namespace symrep
+

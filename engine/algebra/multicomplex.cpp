@@ -57,18 +57,8 @@ std::shared_ptr<const multicomplex> multicomplex::make(unsigned n) {
     return std::shared_ptr<const multicomplex>(new multicomplex(n));
 }
 
-void multicomplex::require_exact(const char* what) const {
-    if (!exact()) dp::refuse_exact(name(), max_order, what);
-}
 
-bool multicomplex::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
-    return dp::takes(operands, exact(), name(), max_order, what);
-}
 
-GiNaC::matrix multicomplex::canonical_matrix(const coeffs& w) const {
-    require_exact("canonical matrix");
-    return algebra::canonical_matrix(w);
-}
 
 std::string multicomplex::name() const { return "multicomplex(" + std::to_string(n_) + ")"; }
 

@@ -53,7 +53,7 @@ public:
     /// (and float-only above max_order, see above).
     static std::shared_ptr<const multicomplex> make(unsigned n);
     /// n <= max_order: exact coordinates are allowed.
-    bool exact() const { return n_ <= max_order; }
+    bool exact() const override { return n_ <= max_order; }
 
     /// n (the algebra has n+1 imaginary units i0..in).
     unsigned order() const { return n_; }
@@ -141,16 +141,11 @@ public:
     /// (III.4.8) Omega_p = omega_0 + sum_{k=1}^n (-1)^{p_k} omega_k.
     std::vector<GiNaC::ex> generating_frequencies(const std::vector<GiNaC::ex>& omega) const;
 
-    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
 
 private:
     explicit multicomplex(unsigned n) : n_(n) {}
     coeffs tidy_all(coeffs c) const;
-    /// Whether operands with these coordinates take the double path (see above);
-    /// throws size_error for a float-only algebra and non-numeric coordinates.
-    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
-    /// Throws size_error naming the exact limit in a float-only algebra.
-    void require_exact(const char* what) const;
+    unsigned exact_limit() const override { return max_order; }
     unsigned n_;
 };
 

@@ -49,18 +49,8 @@ algebra_ptr sobrero::make(long n) {
     return std::make_shared<sobrero>(unsigned(n));
 }
 
-void sobrero::require_exact(const char* what) const {
-    if (!exact()) dp::refuse_exact(name(), max_n, what);
-}
 
-bool sobrero::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
-    return dp::takes(operands, exact(), name(), max_n, what);
-}
 
-GiNaC::matrix sobrero::canonical_matrix(const coeffs& w) const {
-    require_exact("canonical matrix");
-    return algebra::canonical_matrix(w);
-}
 
 sobrero::sobrero(unsigned n) : n_(n) {
     if (n > sobrero_d::max_n)

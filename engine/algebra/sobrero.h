@@ -42,8 +42,7 @@ public:
     static algebra_ptr make(long n);
     explicit sobrero(unsigned n);
     /// n <= max_n: exact coordinates are allowed.
-    bool exact() const { return n_ <= max_n; }
-    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
+    bool exact() const override { return n_ <= max_n; }
 
     /// Nilpotency order parameter n (eps^{n+1} = 0).
     unsigned n() const { return n_; }
@@ -88,8 +87,7 @@ public:
     coeffs eps() const;
 
 private:
-    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
-    void require_exact(const char* what) const;
+    unsigned exact_limit() const override { return max_n; }
     unsigned n_;
 };
 

@@ -32,18 +32,8 @@ walsh::walsh(unsigned n) : n_(n) {
                          std::to_string(walsh_d::max_n) + " of the double-precision path");
 }
 
-void walsh::require_exact(const char* what) const {
-    if (!exact()) dp::refuse_exact(name(), max_n, what);
-}
 
-bool walsh::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
-    return dp::takes(operands, exact(), name(), max_n, what);
-}
 
-GiNaC::matrix walsh::canonical_matrix(const coeffs& w) const {
-    require_exact("canonical matrix");
-    return algebra::canonical_matrix(w);
-}
 
 std::string walsh::name() const { return "walsh(" + std::to_string(n_) + ")"; }
 

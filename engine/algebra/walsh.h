@@ -30,8 +30,7 @@ public:
     static algebra_ptr make(long n);
     explicit walsh(unsigned n);
     /// n <= max_n: exact coordinates are allowed.
-    bool exact() const { return n_ <= max_n; }
-    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
+    bool exact() const override { return n_ <= max_n; }
 
     unsigned n() const { return n_; }
     std::string name() const override;  // "walsh(n)"
@@ -65,8 +64,7 @@ public:
     std::size_t generator_index(std::size_t k) const;
 
 private:
-    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
-    void require_exact(const char* what) const;
+    unsigned exact_limit() const override { return max_n; }
     unsigned n_;
 };
 

@@ -35,18 +35,8 @@ walsh_complex::walsh_complex(unsigned n) : n_(n) {
                          std::to_string(walsh_complex_d::max_n) + " of the double-precision path");
 }
 
-void walsh_complex::require_exact(const char* what) const {
-    if (!exact()) dp::refuse_exact(name(), max_n, what);
-}
 
-bool walsh_complex::takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const {
-    return dp::takes(operands, exact(), name(), max_n, what);
-}
 
-GiNaC::matrix walsh_complex::canonical_matrix(const coeffs& w) const {
-    require_exact("canonical matrix");
-    return algebra::canonical_matrix(w);
-}
 
 std::string walsh_complex::name() const { return "walsh_complex(" + std::to_string(n_) + ")"; }
 

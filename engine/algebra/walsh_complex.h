@@ -29,8 +29,7 @@ public:
     static algebra_ptr make(long n);
     explicit walsh_complex(unsigned n);
     /// n <= max_n: exact coordinates are allowed.
-    bool exact() const { return n_ <= max_n; }
-    GiNaC::matrix canonical_matrix(const coeffs& w) const override;
+    bool exact() const override { return n_ <= max_n; }
 
     unsigned n() const { return n_; }
     /// Number of components 2^n (the complex order of W*).
@@ -68,8 +67,7 @@ public:
     coeffs i0() const;
 
 private:
-    bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
-    void require_exact(const char* what) const;
+    unsigned exact_limit() const override { return max_n; }
     unsigned n_;
 };
 
