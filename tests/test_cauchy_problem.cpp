@@ -260,10 +260,10 @@ TEST(CauchyProblem, BadProblemsGetClearMessages) {
         {"vector a, b, r0\node(r'' + a x r' + b x r = 0, r(0) = r0, r'(0) = r0)", "along different vectors"},
         {"vector a, b, r0\node(r'' + a x r' + b x (b x r) = 0, r(0) = r0, r'(0) = r0)", "one K = w x"},
         {"vector a, b, r0\node(r' + a x r + b x r = 0, r(0) = r0)", ""},  // K = (a + b) x
-        {"vector a, b, r0\node(r' + t*(a x r) + b x r = 0, r(0) = r0)", "turns its direction"},
+        {"vector a, b, r0\node(r' + t*(a x r) + b x r = a, r(0) = r0)", "the rotated force Q^T F(t)"},
         {"vector r0\node(r' + (r . r)*r = 0, r(0) = r0)", "not linear"},
         // a nonlinear term named, not "division by zero" from substituting r = 0 (issue 14, bad input)
-        {"vector r0, v0\node(r'' + k*r/|r|^3 = 0, r(0) = r0, r'(0) = v0)", "the term k*r/|r|^3 is not linear in r: a central force"},
+        {"vector r0, v0, e\node(r'' + k*r/|r - e|^3 = 0, r(0) = r0, r'(0) = v0)", "not linear in r"},
         {"ode(y' = 1/y, y(0) = 1)", "the term -1/y is not linear in y"},
         {"vector w, r0\node(r' + t*(w x r) = 0, r(0) = r0)", ""},  // a fixed axis, rate t: fixed_axis.h
         {"vector w, r0\node(r' + t*(w x r) + t*r = 0, r(0) = r0)", "not the rotating-frame operator"},

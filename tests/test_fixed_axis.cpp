@@ -77,7 +77,7 @@ TEST(FixedAxis, OtherFormsAreRefusedWithTheReason) {
     for (const bad& b : {bad{"r'' + 2*w x r' + w x (w x r) = 0", "not the rotating-frame operator"},
                          bad{"r'' + 2*w x r' + w' x r + w x (w x r) + r'/10 = 0", "undamped form only"},
                          bad{"r'' + 2*w x r' + w' x r + w x (w x r) = [1, 0, 0]", "not along the axis"},
-                         bad{"r'' + 2*[sin(t), 0, cos(t)] x r' = 0", "turns its direction"}}) {
+                         bad{"r'' + 2*[sin(t), 0, cos(t)] x r' = 0", "not the rotating-frame operator"}}) {
         const std::size_t before = t.err.str().size();
         EXPECT_NE(t.run(std::string("ode(") + b.equation + ", r(0) = r0, r'(0) = v0)"), 0) << b.equation;
         const std::string msg = t.err.str().substr(before);

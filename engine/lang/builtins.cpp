@@ -18,7 +18,8 @@ std::string value::kind() const {
         case 4: return "list";
         case 5: return "algebra";
         case 6: return "element";
-        default: return "problem";
+        case 7: return "problem";
+        default: return "solution";
     }
 }
 

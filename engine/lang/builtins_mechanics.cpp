@@ -7,6 +7,7 @@
 //   check(P, s)                        exact: residual and initial conditions
 //   verify(P, s, values, T)            against Boost.Odeint on [0, T]
 //   eval(s, values, t = 3600)          numbers
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -21,6 +22,7 @@
 #include "mechanics/scene.h"
 #include "numeric/reference.h"
 #include "mechanics/fixed_axis.h"
+#include "mechanics/turning_frame.h"
 #include "numeric/verify.h"
 #include "vector/vector.h"
 
@@ -91,7 +93,45 @@ std::string precision_note(const num::verify_result& v) {
 
 }  // namespace
 
-value solve_problem(const value& p) { return value(mechanics::solve(p.as_problem())); }
+value solve_problem(const value& p) {
+    if (p.as_problem().turning)  // (Thm VI.3.2.1) r = F_(-w)(psi): Q or psi has no closed form
+        return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+            mechanics::reduced_solution{p.problem_pointer(), {}})});
+    return value(mechanics::solve(p.as_problem()));
+}
+
+namespace {
+
+// The values of a solution by reduction: those bound by solve(P, values), then d's (d wins).
+data_values reduction_values(const reduction& r, data_values d) {
+    for (const auto& [k, v] : r.solution->values.vectors) d.vectors.emplace(k, v);
+    for (const auto& [k, v] : r.solution->values.scalars) d.scalars.emplace(k, v);
+    return exact_values(std::move(d));
+}
+
+// r (or r') of a solution by reduction at each time, in the given order.
+std::vector<Eigen::Vector3d> reduction_at(const reduction& r, const data_values& d, const std::vector<double>& times,
+                                          const builtin& b) {
+    std::vector<std::size_t> order(times.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
+    std::vector<double> sorted;
+    for (const std::size_t i : order) {
+        if (!(times[i] >= 0) || !std::isfinite(times[i]))
+            throw type_error(b.name + ": a solution by reduction is evaluated at finite times t >= 0, not " +
+                             std::to_string(times[i]));
+        sorted.push_back(times[i]);
+    }
+    const auto put = [&](const ex& e) { return put_values_limit(e, d); };
+    const auto states = mechanics::evaluate(*r.solution, put, sorted);
+    std::vector<Eigen::Vector3d> out(times.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = r.derivative ? states[k].v : states[k].r;
+    return out;
+}
+
+value triple_value(const Eigen::Vector3d& x) { return value(list{value(ex(x.x())), value(ex(x.y())), value(ex(x.z()))}); }
+
+}  // namespace
 
 namespace {
 
@@ -105,11 +145,61 @@ mechanics::parameter_values scene_values(const args_t& a, std::size_t i, const b
 
 value solve_scene(const builtin& b, const args_t& a, context& c) {
     const auto& P = problem_arg(a, 0, b);
+    if (P.turning) {  // the reduction with the values bound (they are put in when it is evaluated)
+        mechanics::reduced_solution s{a[0].problem_pointer(), scene_values(a, 1, b)};
+        c.out() << b.name << ": method: reduction to the inertial problem (Thm VI.3.2.1), r = Q psi; "
+                << (!s.form().angle ? "Q numeric (Magnus on SO(3))" : "Q in closed form (VI.2.12)") << ", "
+                << (!s.form().psi ? "psi numeric" : "psi in closed form") << "\n";
+        return value(reduction{std::make_shared<const mechanics::reduced_solution>(std::move(s))});
+    }
     const mechanics::scene_solution s = mechanics::solve(P, scene_values(a, 1, b));
     std::istringstream report(s.model.report());
     for (std::string line; std::getline(report, line);) c.out() << b.name << ": " << line << "\n";
     return value(s.x);
 }
+
+namespace {
+
+// verify(P, s, values, T [, n [, stepper]]) for a solution by reduction: r and r'
+// (x for order 1) from Q psi against Boost.Odeint on P as stated in the rotating frame.
+value verify_reduction(const builtin& b, const args_t& a, context& c) {
+    const auto& P = problem_arg(a, 0, b);
+    const reduction& r = a[1].as_reduction();
+    if (r.derivative) throw type_error(b.name + ": argument 2 must be the solution, not its derivative");
+    const data_values d = reduction_values(r, read_values(a[2], b, 2));
+    const double T = to_double(arg_ex(a, 3, b), b, "the end time T");
+    if (!(T > 0) || !std::isfinite(T)) throw type_error(b.name + ": the end time T must be positive");
+    const long n = a.size() > 4 ? arg_int(a, 4, b, 2, 10000000) : 200;
+    num::integration_options opt;
+    opt.abs_tol = opt.rel_tol = 1e-12;
+    if (a.size() > 5) opt.stepper = num::stepper_from_name(arg_string(a, 5, b));
+    if (opt.stepper == num::stepper_kind::rk4)
+        throw type_error(b.name + ": rk4 has no error control; use rkf78, bulirsch_stoer or dopri5");
+    const auto t0 = std::chrono::steady_clock::now();
+    data_values dp = d;
+    dp.scalars.erase(P.t);
+    const first_order_system sys = first_order(P, dp, b);
+    num::symbolic_system rhs(sys.rhs, GiNaC::ex_to<GiNaC::symbol>(P.t), sys.state, {});
+    const std::size_t m = sys.state.size();  // r and r' (order 2), x (order 1)
+    const auto put = [&](const ex& e) { return put_values_limit(e, dp); };
+    const num::sampled_function cf = [&](const std::vector<double>& times, double* out) {
+        const auto states = mechanics::evaluate(*r.solution, put, times);
+        for (std::size_t k = 0; k < times.size(); ++k)
+            for (std::size_t i = 0; i < m; ++i) out[k * m + i] = i < 3 ? states[k].r[int(i)] : states[k].v[int(i - 3)];
+    };
+    const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const num::verify_result v = num::verify(cf, m, rhs.function(), sys.initial, 0.0, T, std::size_t(n), opt);
+    static const char* axes[] = {"x", "y", "z", "x'", "y'", "z'"};
+    c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
+            << " (component " << axes[v.component_of_max] << " of " << P.name << (v.component_of_max < 3 ? "" : "'")
+            << ", t = " << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
+            << "]; reduction " << seconds(v.closed_form_seconds) << ", " << num::stepper_name(opt.stepper) << " "
+            << seconds(v.integration_seconds) << " (" << v.rhs_evaluations << " right-hand sides), setup "
+            << seconds(prep) << "\n";
+    return value(ex(v.max_relative_difference));
+}
+
+}  // namespace
 
 void register_mechanics_builtins(registry& r) {
     add(r, "cross", "cross(a, b)", "The cross product a x b (same as the operator x).", "",
@@ -190,6 +280,11 @@ void register_mechanics_builtins(registry& r) {
         "4*r = 0, r(0) = r0, r'(0) = v0))",
         1, 1, [](const builtin& b, const args_t& a, context&) -> value {
             const auto& P = problem_arg(a, 0, b);
+            if (P.turning) {
+                list out;
+                for (const ex& I : mechanics::first_integrals(P, *P.turning)) out.push_back(value(I));
+                return value(out);
+            }
             std::string why;
             const auto fa = P.fixed_axis ? std::optional<mechanics::fixed_axis_form>(*P.fixed_axis)
                                          : mechanics::read_fixed_axis(P, &why);
@@ -208,6 +303,10 @@ void register_mechanics_builtins(registry& r) {
         "values put in: the check of a scene's solution solve(P, values).",
         "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
             const auto& P0 = problem_arg(a, 0, b);
+            if (a[1].is_reduction())
+                throw domain_error(b.name + ": the solution is the reduction " + P0.name +
+                                   " = F_(-w)(psi) (Thm VI.3.2.1, proved once for all w in the tests), not a closed "
+                                   "form in t: compare it with the equation numerically, verify(P, s, values, T)");
             const mechanics::parameter_values vals =
                 a.size() == 3 ? scene_values(a, 2, b) : mechanics::parameter_values{};
             const mechanics::cauchy_problem P = a.size() == 3 ? mechanics::with_values(P0, vals) : P0;
@@ -275,6 +374,23 @@ void register_mechanics_builtins(registry& r) {
         "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases).",
         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
         [](const builtin& b, const args_t& a, context&) -> value {
+            if (a[0].is_reduction()) {  // r = F_(-w)(psi) (or r') at the given times, numerically
+                const reduction& r = a[0].as_reduction();
+                if (a.size() != 3)
+                    throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
+                const ex& tr = arg_ex(a, 2, b);
+                if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(r.solution->problem->t))
+                    throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
+                std::vector<double> times;
+                const ex T = tr.rhs();
+                for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
+                    times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
+                const auto x = reduction_at(r, reduction_values(r, read_values(a[1], b, 1)), times, b);
+                if (x.size() == 1 && !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T)) return triple_value(x[0]);
+                list out;
+                for (const auto& v : x) out.push_back(triple_value(v));
+                return value(out);
+            }
             // floats taken as the exact numbers they are, so that nothing is rounded before
             // to_double's precision-controlled evaluation (cancellation, long phases)
             const ex e = num::exact_floats_of(arg_ex(a, 0, b));
@@ -333,6 +449,7 @@ void register_mechanics_builtins(registry& r) {
         "", "vector r0\nverify(ode(r'' + 4*r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)", 4, 6,
         [](const builtin& b, const args_t& a, context& c) -> value {
             const auto& P = problem_arg(a, 0, b);
+            if (a[1].is_reduction()) return verify_reduction(b, a, c);
             const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
             data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
             const double T = to_double(arg_ex(a, 3, b), b, "the end time T");

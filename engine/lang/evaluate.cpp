@@ -214,6 +214,15 @@ value session::eval_inner(const node& n) {
                     for (std::size_t k = q; k < n.text.size(); ++k) d = diff_t(d, symbol("t"));
                     return d;
                 }
+                // s' of a solution by reduction: r' = Q psi' - w x r (evaluated numerically)
+                if (const value* base = get(n.text.substr(0, q)); base && base->is_reduction()) {
+                    reduction r = base->as_reduction();
+                    r.derivative += int(n.text.size() - q);
+                    if (r.derivative > 1)
+                        throw type_error(n.text + ": a solution by reduction has its first derivative only (" +
+                                         n.text.substr(0, q) + "'), not higher ones");
+                    return value(r);
+                }
             }
             return ex(symbol(n.text));
         }

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "mechanics/fixed_axis.h"
+#include "mechanics/turning_frame.h"
 #include "scalar/scalar.h"
 #include "syntax/parser.h"
 #include "output/printer.h"
@@ -523,11 +524,22 @@ value session::ode_form(const node& n) {
         P.reduced = std::make_shared<const mechanics::operator_form>(mechanics::reduce(P));
     } catch (const domain_error&) {
         // a rotating frame with w(t) = s(t) u (VI.2): solved by reduction to the inertial problem
-        std::string why;
-        auto fa = mechanics::read_fixed_axis(P, &why);
-        if (!fa && !why.empty()) throw domain_error(why);
-        if (!fa) throw;
-        P.fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fa));
+        // a turning w(t) or a central field (VI.3): r = F_(-w)(psi), evaluated numerically
+        std::string why, why3;
+        std::optional<mechanics::fixed_axis_form> fa;
+        std::optional<mechanics::turning_frame_form> tf;
+        try {
+            fa = mechanics::read_fixed_axis(P, &why);
+            if (!fa) tf = mechanics::read_turning_frame(P, &why3);
+        } catch (const error& e) {
+            if (!dynamic_cast<const domain_error*>(&e) && !dynamic_cast<const type_error*>(&e)) throw;
+            why3 = e.what();
+        }
+        if (fa) P.fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fa));
+        else if (tf) P.turning = std::make_shared<const mechanics::turning_frame_form>(std::move(*tf));
+        else if (!why.empty()) throw domain_error(why);  // a fixed axis, in another form: its reason
+        else if (!why3.empty()) throw domain_error(why3);
+        else throw;
     }
     return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
 }

@@ -31,6 +31,10 @@ std::string print_value(const value& v, bool quote_strings) {
             s += ", " + P.unknown_name(m) + "(0) = " + print_ex(P.initial[m]);
         return s + ")";
     }
+    if (v.is_reduction()) {
+        const reduction& r = v.as_reduction();
+        return (r.derivative ? "the derivative in t of: " : "") + r.solution->to_string();
+    }
     return print_element(v.as_element());
 }
 

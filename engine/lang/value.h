@@ -3,7 +3,7 @@
 // A value is one of: nothing (a statement with no result), a boolean, a GiNaC
 // expression (numbers, symbols, formulas, relations `a = b`, vector expressions),
 // a string, a list, an algebra, an element of an algebra, or a Cauchy problem
-// (`ode(...)`). Values are immutable and cheap to copy.
+// (`ode(...)`), or a solution by reduction (solve(P) of a turning frame). Values are immutable and cheap to copy.
 #pragma once
 
 #include <algorithm>
@@ -18,12 +18,19 @@
 #include "algebra/element.h"
 #include "core/error.h"
 #include "mechanics/cauchy_problem.h"
+#include "mechanics/reduced_solution.h"
 
 namespace symrep::lang {
 
 struct value;
 using list = std::vector<value>;
 using problem_ptr = std::shared_ptr<const mechanics::cauchy_problem>;
+/// A solution by reduction r = F_(-w)(psi) (mechanics/reduced_solution.h), or its
+/// derivative r' when `derivative` is set.
+struct reduction {
+    std::shared_ptr<const mechanics::reduced_solution> solution;
+    int derivative = 0;
+};
 
 /// Lists may nest at most this deep ([[...]] counts 2): printing, comparing and
 /// destroying a value recurse through the nesting.
@@ -31,7 +38,7 @@ inline constexpr std::size_t max_list_depth = 1000;
 
 struct value {
     using variant_t = std::variant<std::monostate, bool, GiNaC::ex, std::string,
-                                   std::shared_ptr<const list>, algebra_ptr, element, problem_ptr>;
+                                   std::shared_ptr<const list>, algebra_ptr, element, problem_ptr, reduction>;
 private:
     std::size_t depth_ = 0;  ///< list nesting depth (0: not a list), cached at construction
 
@@ -52,6 +59,7 @@ public:
     value(algebra_ptr A) : v(std::move(A)) {}
     value(element w) : v(std::move(w)) {}
     value(problem_ptr p) : v(std::move(p)) {}
+    value(reduction r) : v(std::move(r)) {}
 
     bool is_none() const { return std::holds_alternative<std::monostate>(v); }
     bool is_bool() const { return std::holds_alternative<bool>(v); }
@@ -61,6 +69,7 @@ public:
     bool is_algebra() const { return std::holds_alternative<algebra_ptr>(v); }
     bool is_element() const { return std::holds_alternative<element>(v); }
     bool is_problem() const { return std::holds_alternative<problem_ptr>(v); }
+    bool is_reduction() const { return std::holds_alternative<reduction>(v); }
 
     bool as_bool() const { return std::get<bool>(v); }
     const GiNaC::ex& as_ex() const { return std::get<GiNaC::ex>(v); }
@@ -69,8 +78,10 @@ public:
     const algebra_ptr& as_algebra() const { return std::get<algebra_ptr>(v); }
     const element& as_element() const { return std::get<element>(v); }
     const mechanics::cauchy_problem& as_problem() const { return *std::get<problem_ptr>(v); }
+    const problem_ptr& problem_pointer() const { return std::get<problem_ptr>(v); }
+    const reduction& as_reduction() const { return std::get<reduction>(v); }
 
-    /// "nothing", "boolean", "expression", "string", "list", "algebra", "element", "problem".
+    /// "nothing", "boolean", "expression", "string", "list", "algebra", "element", "problem", "solution".
     std::string kind() const;
     /// kind() with its article: "an expression", "a list", ...
     std::string a_kind() const;

@@ -1,6 +1,7 @@
 // symrep/mechanics/cauchy_problem.cpp
 #include "mechanics/cauchy_problem.h"
 #include "mechanics/fixed_axis.h"
+#include "mechanics/turning_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -306,12 +307,12 @@ std::optional<ex> nonlinear_term(const cauchy_problem& P) {
 operator_form reduce(const cauchy_problem& P) {
     if (const auto term = nonlinear_term(P)) {
         const std::string t = text(*term);
-        const bool central = t.find("|" + P.name + "|") != std::string::npos;
+        // (a central field f(|r|) r/|r| in the rotating-frame form never gets here: ode() reads it
+        // by turning_frame.h when this fails)
         throw domain_error("the term " + t + " is not linear in " + P.name +
-                           (central ? ": a central force f(|r|) r/|r| (Kepler's k r/|r|^3) has no closed form in t "
-                                      "here; ode() solves linear problems (its reduction to the inertial problem, "
-                                      "Thm VI.3.2.1, is in the library: mechanics/rotating_frame.h)"
-                                    : ": ode() solves linear problems"));
+                           ": ode() solves linear problems, and nonlinear ones of the form m (r'' + 2 w x r' + "
+                           "w' x r + w x (w x r)) + m f(|r|) r/|r| = 0 with a central field (a function of |r| "
+                           "only; Thm VI.3.2.1)");
     }
     if (problem_has_float(P)) {
         cauchy_problem Q = P;
@@ -478,6 +479,9 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 
 ex solve(const cauchy_problem& P) {
     if (!P.reduced && P.fixed_axis) return solve_fixed_axis(P, *P.fixed_axis);
+    if (!P.reduced && P.turning)
+        throw closed_form_error("the solution " + describe_reduction(P, *P.turning) +
+                                "\nhas no closed form in t (reduced_solution.h evaluates it)");
     const operator_form F = P.reduced ? *P.reduced : reduce(P);
     const rotation_operator_algebra R(F.Omega);
     const ex x = vector_solution(P, F, solve(F.ode, R, P.t));

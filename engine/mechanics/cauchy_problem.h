@@ -36,6 +36,7 @@ namespace symrep::mechanics {
 
 struct operator_form;
 struct fixed_axis_form;
+struct turning_frame_form;
 
 struct cauchy_problem {
     std::string name;                  ///< the unknown's name, e.g. "r"
@@ -49,6 +50,9 @@ struct cauchy_problem {
     /// When the operator is not constant but the problem is a fixed-axis rotating-frame
     /// problem (fixed_axis.h, VI.2): its reading, and solve() reduces it to the inertial one.
     std::shared_ptr<const fixed_axis_form> fixed_axis;
+    /// A rotating-frame problem with a turning w(t) or a central field (turning_frame.h, VI.3):
+    /// its reading; solve() refuses it (Q or psi has no closed form), reduced_solution evaluates it.
+    std::shared_ptr<const turning_frame_form> turning;
 
     /// M, the order.
     std::size_t order() const { return unknowns.size() - 1; }

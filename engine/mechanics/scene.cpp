@@ -2,6 +2,7 @@
 #include "mechanics/scene.h"
 
 #include "mechanics/fixed_axis.h"
+#include "mechanics/turning_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -397,6 +398,9 @@ ex evaluate_with_guard(const ex& x) {
 }  // namespace
 
 scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
+    if (!P.reduced && P.turning)
+        throw closed_form_error("the solution " + describe_reduction(P, *P.turning) +
+                                "\nhas no closed form in t (reduced_solution.h evaluates it)");
     if (!P.reduced && P.fixed_axis) {
         // a frame rotating about a fixed axis (VI.2): the general reduction with the values
         // put in (floats as the exact numbers they are, the result evaluated once at the end)

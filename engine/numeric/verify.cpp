@@ -100,6 +100,13 @@ verify_result verify(const compiled_function& closed_form, const rhs_function& r
                    options);
 }
 
+verify_result verify(const sampled_function& closed_form, std::size_t m, const rhs_function& rhs,
+                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                     const integration_options& options) {
+    auto all = [&](verify_result& res, double* values) { closed_form(res.times, values); };
+    return compare(1, m, all, rhs, initial_state, t0, t1, n_points, options);
+}
+
 verify_result verify(const stable_function& closed_form, const rhs_function& rhs,
                      const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
                      const integration_options& options) {

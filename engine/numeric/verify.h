@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -71,6 +72,14 @@ verify_result verify(const stable_function& closed_form, const rhs_function& rhs
                      const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
                      const integration_options& options = {});
 verify_result verify(const compiled_function& closed_form, const rhs_function& rhs,
+                     const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
+                     const integration_options& options = {});
+
+/// Numeric back end for a closed form evaluated at all sample times at once (a
+/// solution by reduction, whose rotation tensor is integrated along the samples):
+/// all(times, values) fills times.size() rows of m values (row-major).
+using sampled_function = std::function<void(const std::vector<double>& times, double* values)>;
+verify_result verify(const sampled_function& closed_form, std::size_t m, const rhs_function& rhs,
                      const std::vector<double>& initial_state, double t0, double t1, std::size_t n_points,
                      const integration_options& options = {});
 

@@ -1,0 +1,270 @@
+// symrep/mechanics/turning_frame.cpp -- the reading of rotating-frame problems
+// and their reduction to the inertial problem (turning_frame.h; thesis VI.2-VI.3).
+#include "mechanics/turning_frame.h"
+
+#include <map>
+
+#include "core/error.h"
+#include "mechanics/quasi_polynomial.h"
+#include "vector/vector.h"
+
+namespace symrep::mechanics {
+
+using GiNaC::ex;
+
+namespace {
+
+using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
+
+bool has_unknown(const cauchy_problem& P, const ex& e);
+
+// E split by the unknowns: part k holds the terms in x^(k) (k <= M), part M + 1 those
+// without an unknown. Nothing when a term holds two different unknowns (not linear in
+// the derivatives). Done on the expanded terms, not by putting 0 for the unknowns: a
+// central field k x/|x|^3 has no value at x = 0.
+std::optional<std::vector<ex>> split_by_unknown(const cauchy_problem& P, const ex& E) {
+    const std::size_t M = P.order();
+    std::vector<ex> part(M + 2, ex(0));
+    const ex e = GiNaC::expand(E);
+    const std::size_t n = GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1;
+    for (std::size_t i = 0; i < n; ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        std::size_t found = M + 1;
+        for (std::size_t k = 0; k <= M; ++k)
+            if (term.has(P.unknowns[k])) {
+                if (found != M + 1) return std::nullopt;
+                found = k;
+            }
+        part[found] += term;
+    }
+    return part;
+}
+
+bool has_unknown(const cauchy_problem& P, const ex& e) {
+    for (const ex& u : P.unknowns)
+        if (e.has(u)) return true;
+    return false;
+}
+
+// The coefficient c of L = c x (L a scalar multiple of the unknown x), or nothing.
+std::optional<ex> multiple_of(const cauchy_problem& P, const ex& L, const ex& x) {
+    ex c = 0;
+    for (const vector_term& term : canonical_terms(L)) {
+        if (!term.monomial.is_equal(x) || has_unknown(P, term.coefficient)) return std::nullopt;
+        c += term.coefficient;
+    }
+    return GiNaC::normal(c);
+}
+
+// V(p) = int f dp for f a sum of c p^n (c free of p): 0 at infinity for n < -1, at 0 for
+// n > -1, log p for n = -1; empty when a term is not of that form.
+std::optional<ex> potential_of(const ex& f, const ex& p) {
+    const ex e = GiNaC::expand(f);
+    ex V = 0;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        if (term.is_zero()) continue;
+        const int deg = term.degree(p), ldeg = term.ldegree(p);
+        if (deg != ldeg) return std::nullopt;
+        const ex c = term.coeff(p, deg);
+        if (c.has(p)) return std::nullopt;
+        if (deg == -1) V += c * GiNaC::log(p);
+        else V += c * GiNaC::pow(p, deg + 1) / (deg + 1);
+    }
+    return V;
+}
+
+}  // namespace
+
+std::optional<std::pair<ex, ex>> fixed_direction(const ex& w, const ex& t) {
+    std::vector<vector_term> wt = canonical_terms(w);
+    if (wt.empty()) return std::nullopt;
+    for (vector_term& term : wt)  // a literal [0, 0, f(t)]: f(t) [0, 0, 1]
+        if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
+            std::size_t k = 0;
+            while (k < 3 && GiNaC::normal(term.monomial.op(k)).is_zero()) ++k;
+            if (k == 3) continue;
+            const ex c = term.monomial.op(k);
+            term.coefficient = GiNaC::normal(term.coefficient * c);
+            term.monomial = vector_literal(GiNaC::normal(term.monomial.op(0) / c),
+                                           GiNaC::normal(term.monomial.op(1) / c),
+                                           GiNaC::normal(term.monomial.op(2) / c));
+        }
+    const ex s = GiNaC::normal(wt[0].coefficient);
+    ex u = 0;
+    for (const vector_term& term : wt) {
+        const ex ratio = GiNaC::normal(term.coefficient / s);
+        if (ratio.has(t) || term.monomial.has(t)) return std::nullopt;  // the direction turns
+        u += ratio * term.monomial;
+    }
+    return std::make_pair(s, u);
+}
+
+std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string* why) {
+    bool varying = false;  // a reason is given only for a w that depends on t or a nonlinear term
+    auto refuse = [&](const std::string& reason) -> std::optional<frame_terms> {
+        if (why && varying) *why = reason;
+        return std::nullopt;
+    };
+    const std::size_t M = P.order();
+    if (!P.is_vector || (M != 1 && M != 2) || P.initial.size() != M) return std::nullopt;
+    const ex& t = P.t;
+    const ex &x = P.unknowns[0], &xc = P.unknowns[M - 1], &xM = P.unknowns[M];
+    const std::string op = M == 2 ? P.unknown_name(2) + " + 2 w x " + P.unknown_name(1) + " + w' x " + P.name +
+                                        " + w x (w x " + P.name + ")"
+                                  : P.unknown_name(1) + " + w x " + P.name;
+    const auto parts = split_by_unknown(P, P.expression);
+    if (!parts) return std::nullopt;
+    const auto m = multiple_of(P, (*parts)[M], xM);
+    if (!m || m->is_zero() || m->has(t)) return std::nullopt;
+    // the cross terms on x^(M-1): sum c_j a_j x x^(M-1) = M m w x x^(M-1)
+    ex cross1 = 0;
+    for (const vector_term& term : canonical_terms((*parts)[M - 1])) {
+        const ex& mono = term.monomial;
+        if (!is_ex_the_function(mono, vcross)) continue;  // c x^(M-1), g(|x|) x: in the remainder below
+        if (has_unknown(P, term.coefficient)) return std::nullopt;
+        if (mono.op(1).is_equal(xc) && !has_unknown(P, mono.op(0))) cross1 += term.coefficient * mono.op(0);
+        else if (mono.op(0).is_equal(xc) && !has_unknown(P, mono.op(1))) cross1 -= term.coefficient * mono.op(1);
+        else if (M == 2) return std::nullopt;  // (order 1: w x (w x x) and the like are read below)
+    }
+    frame_terms T;
+    T.order = M;
+    T.m = *m;
+    T.w = cross1 / (int(M) * *m);
+    T.p = GiNaC::possymbol("p");
+    varying = T.w.has(t);
+    T.form = "the problem has the rotating-frame terms of w(t) = " + to_string(T.w) + " (" +
+             to_string(int(M) * T.w) + " x " + P.unknown_name(M - 1) + "), but ";
+    const ex R = M == 2 ? *m * (xM + 2 * cross(T.w, xc) + cross(diff_t(T.w, t), x) + cross(T.w, cross(T.w, x)))
+                        : *m * (xM + cross(T.w, x));
+    const auto rest = split_by_unknown(P, P.expression - R);
+    if (!rest) return std::nullopt;
+    T.free = (*rest)[M + 1];
+    for (std::size_t k = 1; k <= M; ++k)
+        if (!equal((*rest)[k], 0))
+            return refuse(T.form + "beside m (" + op + ") it has the terms " + to_string((*rest)[k]) + " in " +
+                          P.unknown_name(k) + " (Thm VI.2.2 and VI.3.2.1 reduce the undamped form only)");
+    const ex L0 = (*rest)[0];
+    ex g = 0;
+    bool central = true;
+    for (const vector_term& term : canonical_terms(L0)) {
+        if (!term.monomial.is_equal(x)) central = false;
+        else g += term.coefficient;
+    }
+    // |x| as p: dot(x, x) = p^2 (norm(x) = sqrt(dot(x, x)) = p, p > 0)
+    g = GiNaC::normal(g.subs(vdot(x, x) == GiNaC::pow(T.p, 2)));
+    central = central && !has_unknown(P, g) && !g.has(t);
+    // without cross terms (w = 0) only a nonlinear central field is this reading's
+    // (a linear problem is reduce()'s, and its error stands)
+    if (cross1.is_zero() && (M != 2 || !(central && g.has(T.p)))) return std::nullopt;
+    if (!central)
+        return refuse(T.form + "the terms " + to_string(L0) + " in " + P.name +
+                      " are not the rotating-frame operator (m (" + op + ")) plus a central field g(|" + P.name +
+                      "|) " + P.name + " (a function of |" + P.name + "| only, constant in t)");
+    T.g = g;
+    return T;
+}
+
+std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, std::string* why) {
+    std::string inner;
+    const auto T = read_frame_terms(P, &inner);
+    if (!T) {
+        if (why) *why = inner;
+        return std::nullopt;
+    }
+    const bool reasons = T->w.has(P.t) || T->g.has(T->p);
+    auto refuse = [&](const std::string& reason) -> std::optional<turning_frame_form> {
+        if (why && reasons) *why = reason;
+        return std::nullopt;
+    };
+    if (!T->free.is_zero())
+        return refuse(T->form + "it has the free term " + to_string(T->free) +
+                      ": in a frame whose axis turns, or with a central field, the inertial problem would have the "
+                      "rotated force Q^T F(t) (Thm VI.3.2.1 is stated without one)");
+    const ex& t = P.t;
+    turning_frame_form F;
+    F.terms = *T;
+    F.w0 = T->w.subs(t == 0);
+    if (const auto d = fixed_direction(T->w, t)) {
+        F.u = d->second;
+        try {
+            F.angle = norm(*F.u) * quasi_polynomial::from_ex(d->first, t).antiderivative().to_ex();
+        } catch (const std::exception&) {
+            F.angle = std::nullopt;  // int s not elementary here: Q numeric (Magnus) like a turning w
+        }
+    }
+    const ex& x = P.unknowns[0];
+    if (P.order() == 1) {
+        if (T->g.has(T->p))
+            return refuse(T->form + "the term " + to_string(T->g.subs(T->p == norm(x)) * x) +
+                          " is nonlinear: a first-order problem is reduced with a constant k x only");
+        F.k = GiNaC::normal(T->g / T->m);
+        auto I = std::make_shared<cauchy_problem>(P);
+        I->expression = T->m * P.unknowns[1] + T->g * x;
+        I->turning.reset();
+        I->reduced = std::make_shared<const operator_form>(reduce(*I));
+        F.psi = solve(*I);
+        return F;
+    }
+    F.f = GiNaC::normal(T->p * T->g / T->m);
+    F.potential = potential_of(F.f, T->p);
+    F.psi_initial_velocity = P.initial[1] + cross(F.w0, P.initial[0]);
+    if (!T->g.has(T->p)) {  // f = k/m p: the inertial problem has constant coefficients
+        auto I = std::make_shared<cauchy_problem>(P);
+        I->expression = T->m * P.unknowns[2] + T->g * x;
+        I->turning.reset();
+        I->initial = {P.initial[0], F.psi_initial_velocity};
+        I->reduced = std::make_shared<const operator_form>(reduce(*I));
+        F.psi = solve(*I);
+    }
+    return F;
+}
+
+std::string describe_reduction(const cauchy_problem& P, const turning_frame_form& F) {
+    const std::string r = P.name, W = to_string(F.terms.w);
+    std::string s = r + " = F_(-w)(psi) = Q psi   (Thm VI.3.2.1)\n";
+    if (F.terms.w.is_zero())
+        s += "  Q = I (w = 0: an inertial frame)\n";
+    else if (!F.angle || !F.u)
+        s += "  Q' = -W Q, Q(0) = I, W x = w x x, w(t) = " + W +
+             (!F.u ? "   (VI.3.117; numeric: Magnus on SO(3))\n"
+                   : "   (fixed direction " + to_string(*F.u) + "; numeric: Magnus on SO(3))\n");
+    else
+        s += "  Q x = cos(a) x - sin(a)/|u| u x x + (1 - cos(a))/|u|^2 (u . x) u, u = " + to_string(*F.u) +
+             ", a(t) = " + to_string(*F.angle) + "   (VI.2.12, w(t) = " + W + ")\n";
+    if (P.order() == 1) {
+        s += "  psi'" + (F.k.is_zero() ? std::string() : " + (" + to_string(F.k) + ") psi") + " = 0, psi(0) = " +
+             to_string(P.initial[0]) + "\n";
+        s += "  psi = " + to_string(*F.psi);
+        return s;
+    }
+    const GiNaC::possymbol q("|psi|");
+    const ex f = F.f.subs(F.terms.p == q), lin = GiNaC::normal(F.terms.g / F.terms.m);
+    s += "  psi''" + (f.is_zero() ? std::string() : F.terms.g.has(F.terms.p) ? " + (" + to_string(f) + ") psi/|psi|"
+                                                                            : " + (" + to_string(lin) + ") psi") +
+         " = 0, psi(0) = " +
+         to_string(P.initial[0]) + ", psi'(0) = " + to_string(F.psi_initial_velocity) + "   (VI.3.133)\n";
+    if (F.psi) s += "  psi = " + to_string(*F.psi);
+    else if (GiNaC::normal(F.f * GiNaC::pow(F.terms.p, 2)).has(F.terms.p))
+        s += "  psi: the inertial orbit in the central field, numeric (Boost.Odeint)";
+    else
+        s += "  psi: the Kepler orbit with mu = " + to_string(GiNaC::normal(F.f * GiNaC::pow(F.terms.p, 2))) +
+             " (universal variables, VI.3.153-157)";
+    return s;
+}
+
+std::vector<ex> first_integrals(const cauchy_problem& P, const turning_frame_form& F) {
+    if (P.order() != 2)
+        throw domain_error("first_integrals: the problem has order " + std::to_string(P.order()) +
+                           "; the first integrals of Thm VI.3.2.2 are of the second-order problem");
+    const ex &r = P.unknowns[0], &r1 = P.unknowns[1];
+    const ex p = r1 + cross(F.terms.w, r);
+    const ex L = cross(r, p);
+    std::vector<ex> out;
+    if (F.potential) out.push_back(F.terms.m * (dot(p, p) / 2 + F.potential->subs(F.terms.p == norm(r))));
+    if (F.u) out.push_back(dot(*F.u, L));
+    out.push_back(dot(L, L));
+    return out;
+}
+
+}  // namespace symrep::mechanics

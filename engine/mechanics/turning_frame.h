@@ -1,0 +1,85 @@
+// symrep/mechanics/turning_frame.h -- problems in a frame that rotates with an
+// arbitrary angular velocity w(t) (thesis VI.3), with a central positional field,
+// as a user writes them, and their reduction to the inertial problem.
+//
+// The problem (m a constant, w(t) any vector expression in t: a literal with
+// components in t, s(t) u, a sum of such; f a function of |r| only):
+//     m (r'' + 2 w x r' + w' x r + w x (w x r)) + m f(|r|) r/|r| = 0,
+//     r(0) = r0,  r'(0) = v0                                      (VI.3.132)
+// (order 1: m (x' + w x x) + k x = 0, x(0) = x0, a charge in B(t) with w = q B/m).
+// read_frame_terms() reads m, w (the cross terms on r' over 2 m) and what is
+// left beside the rotating-frame operator; read_turning_frame() accepts it
+// when that rest is a central field g(|r|) r (a constant k, k r/|r|^3 for
+// Kepler, any g given as an expression in |r|) and there is no free term.
+// By Thm VI.3.2.1 the solution is
+//     r = F_{-w}(psi) = Q psi,  Q' = -W Q, Q(0) = I  (W x = w x x, VI.3.117),
+// psi the inertial solution of psi'' + f(|psi|) psi/|psi| = 0 with
+// psi(0) = r0 and psi'(0) = v0 + w(0) x r0 (VI.3.133), r' = Q psi' - w x r.
+// Q has no closed form for a turning w: the solution is an object
+// (reduced_solution) that prints this derivation and is evaluated numerically
+// (numeric/rotation_tensor.h: Magnus on SO(3); closed form (VI.2.12) when w has
+// a fixed direction; psi in closed form for f = 0, f = w0^2 p and Kepler's
+// f = mu/p^2 by universal variables, numeric/kepler.h; odeint otherwise).
+//
+// A fixed direction with a constant k and a free term along the axis is read
+// first by fixed_axis.h, which gives a closed form; this header takes the rest.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "mechanics/cauchy_problem.h"
+
+namespace symrep::mechanics {
+
+/// What read_frame_terms() finds in E: E = m (operator) + g(|x|) x + free.
+struct frame_terms {
+    std::size_t order = 2;
+    GiNaC::ex m;      ///< the constant leading coefficient
+    GiNaC::ex w;      ///< w(t) as the user wrote it (cross terms / (order m))
+    GiNaC::ex g;      ///< the coefficient of x, a function of the symbol p = |x| (constant for a linear term)
+    GiNaC::ex free;   ///< the terms without an unknown
+    GiNaC::ex p;      ///< the positive symbol standing for |x| in g
+    std::string form; ///< "the problem has the rotating-frame terms of w(t) = ... (2 w x r'), but " for messages
+};
+
+/// Reads E as m (x'' + 2 w x x' + w' x x + w x (w x x)) + g(|x|) x + F(t) (order 2) or
+/// m (x' + w x x) + g x + F(t) (order 1). Nothing when E has no cross terms on
+/// x^(M-1) (or is not of order 1 or 2); with cross terms but another form, nothing
+/// and `why` names what is wrong (damping, a missing w' x r, a non-central term).
+std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string* why = nullptr);
+
+/// w = s(t) u with u constant (a literal [0, 0, f(t)] read as f(t) [0, 0, 1]): (s, u); nothing
+/// when the direction of w turns.
+std::optional<std::pair<GiNaC::ex, GiNaC::ex>> fixed_direction(const GiNaC::ex& w, const GiNaC::ex& t);
+
+/// The reading of a problem solved by Thm VI.3.2.1.
+struct turning_frame_form {
+    frame_terms terms;
+    GiNaC::ex f;          ///< f(p) = p g(p)/m, the central force per unit mass (order 2), in terms.p
+    std::optional<GiNaC::ex> potential;  ///< V(p) with V' = f (0 at infinity for p^n, n < -1; at 0 otherwise); empty if not elementary
+    GiNaC::ex k;          ///< order 1: g/m, a constant (psi = exp(-k t) x0)
+    GiNaC::ex w0;         ///< w(0)
+    GiNaC::ex psi_initial_velocity;  ///< v0 + w(0) x r0 (order 2)
+    std::optional<GiNaC::ex> psi;        ///< the inertial solution in closed form (f = 0 or f = c p; order 1), else empty
+    /// A fixed direction, w = s(t) u: the unit-free direction u and a(t) = |u| int_0^t s (nothing: turning; angle nothing when int s is not elementary).
+    std::optional<GiNaC::ex> u, angle;
+};
+
+/// The reading above; nothing (and `why`, if given, the reason when the problem
+/// has the rotating-frame terms) when P is not of that form.
+std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, std::string* why = nullptr);
+
+/// The derivation r = F_{-w}(psi) as text (several lines), in the thesis's notation.
+std::string describe_reduction(const cauchy_problem& P, const turning_frame_form& F);
+
+/// (Thm VI.3.2.2, VI.3.140-141) with p = r' + w x r: the energy m (|p|^2/2 + V(|r|))
+/// (when V is elementary), |r x p|^2 (psi x psi' = Q^T (r x p) is constant), and for a
+/// fixed direction u also u . (r x p). domain_error for a first-order problem.
+std::vector<GiNaC::ex> first_integrals(const cauchy_problem& P, const turning_frame_form& F);
+
+}  // namespace symrep::mechanics
