@@ -24,6 +24,7 @@
 #include "mechanics/fixed_axis.h"
 #include "mechanics/turning_frame.h"
 #include "numeric/verify.h"
+#include "numeric/quadrature.h"
 #include "vector/vector.h"
 
 namespace symrep::lang {
@@ -468,8 +469,20 @@ void register_mechanics_builtins(registry& r) {
             // the first-order system: state x, x', ..., x^(M-1); x^(M) solved from the equation
             const first_order_system sys = first_order(P, d, b);
             const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            const num::verify_result v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T,
-                                                        std::size_t(n), opt);
+            num::verify_result v;
+            if (std::any_of(cf.begin(), cf.end(), [](const ex& x) { return num::has_integral(x); })) {
+                // integral objects (int_0^t ... dtau, fixed_axis.h): sampled, each by quadrature
+                const num::sampled_function at = [&](const std::vector<double>& times, double* out) {
+                    for (std::size_t k = 0; k < times.size(); ++k)
+                        for (std::size_t i = 0; i < cf.size(); ++i)
+                            out[k * cf.size() + i] =
+                                to_double(cf[i].subs(t == GiNaC::numeric(times[k])), b, "the closed form");
+                };
+                num::symbolic_system rhs(sys.rhs, t, sys.state, {});
+                v = num::verify(at, cf.size(), rhs.function(), sys.initial, 0.0, T, std::size_t(n), opt);
+            } else {
+                v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T, std::size_t(n), opt);
+            }
             static const char* axes[] = {"x", "y", "z"};
             c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
                     << " (component " << (P.is_vector ? axes[v.component_of_max] : P.name.c_str()) << ", t = "

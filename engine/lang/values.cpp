@@ -139,7 +139,8 @@ double to_double(const ex& x, const builtin& b, const std::string& what) {
     // digits where x cancels or has a long phase.
     try {
         return num::accurate_double(x);
-    } catch (const domain_error&) {
+    } catch (const domain_error& e) {
+        if (std::string(e.what()).rfind("integral:", 0) == 0) throw domain_error(b.name + ": " + e.what());
         throw type_error(b.name + ": " + what + " does not evaluate to a real number: " +
                          message_text(GiNaC::evalf(x)) + " (give every symbol a value)");
     }

@@ -2,6 +2,7 @@
 // problem to the inertial one (fixed_axis.h; thesis VI.2).
 #include "mechanics/fixed_axis.h"
 
+#include <algorithm>
 #include <map>
 
 #include "core/error.h"
@@ -35,14 +36,17 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         F.s = d->first;
         F.u = d->second;
         const ex w = F.s * F.u;
-        if (!T->free.is_zero() && !equal(cross(F.u, T->free), 0))  // Q^T F = F needs F along u
-            return refuse(T->form + "the free term " + to_string(T->free) + " is not along the axis " +
-                          to_string(F.u) + " (the inertial problem would have the rotated force Q^T F)");
         // a(t) = |u| int_0^t s
         F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, P.t).antiderivative().to_ex();
         F.m = T->m;
         F.k = T->g;
+        // F along u passes Q^T unchanged; across u it is rotated (solve_fixed_axis)
         F.free = T->free;
+        F.across = 0;
+        if (!T->free.is_zero() && !equal(cross(F.u, T->free), 0)) {
+            F.free = dot(F.u, T->free) / dot(F.u, F.u) * F.u;
+            F.across = T->free - F.free;
+        }
         // the inertial problem m psi'' + k psi + F = 0, psi(0) = r0, psi'(0) = v0 + w(0) x r0
         // (order 1: m psi' + k psi + F = 0, psi(0) = x0)
         const std::size_t M = P.order();
@@ -60,9 +64,108 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
     }
 }
 
+const ex& integration_variable() {
+    static const ex tau = GiNaC::realsymbol("tau");
+    return tau;
+}
+
+namespace {
+
+// G(t), the impulse response of m y^(M) + k y = 0: y(0) = ... = 0, y^(M-1)(0) = 1/m.
+ex impulse_response(const cauchy_problem& P, const fixed_axis_form& F) {
+    const std::size_t M = P.order();
+    cauchy_problem G;
+    G.name = "G";
+    G.t = P.t;
+    G.is_vector = false;
+    for (std::size_t m = 0; m <= M; ++m) G.unknowns.push_back(GiNaC::realsymbol(G.unknown_name(m)));
+    G.expression = F.m * G.unknowns[M] + F.k * G.unknowns[0];
+    for (std::size_t m = 0; m < M; ++m) G.initial.push_back(m + 1 == M ? 1 / F.m : ex(0));
+    return solve(G);
+}
+
+// e = k * rest with k the factors free of x.
+std::pair<ex, ex> split_constant(const ex& e, const ex& x) {
+    if (!e.has(x)) return {e, 1};
+    if (!GiNaC::is_a<GiNaC::mul>(e)) return {1, e};
+    ex k = 1, rest = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) (e.op(i).has(x) ? rest : k) *= e.op(i);
+    return {k, rest};
+}
+
+// sin, cos, sinh, cosh, exp of an argument a + b (a in x, b free of x) by the addition
+// theorems, so that G(t - tau) separates into functions of t times functions of tau.
+ex separate_argument(const ex& e, const ex& x) {
+    struct recurse : GiNaC::map_function {
+        const ex& x;
+        explicit recurse(const ex& v) : x(v) {}
+        ex operator()(const ex& c) override { return separate_argument(c, x); }
+    } inner(x);
+    const ex m = e.map(inner);
+    if (!GiNaC::is_a<GiNaC::function>(m) || m.nops() != 1) return m;
+    const ex arg = GiNaC::expand(m.op(0));
+    if (!arg.has(x)) return m;
+    ex a = 0, b = 0;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(arg) ? arg.nops() : 1); ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(arg) ? arg.op(i) : arg;
+        (term.has(x) ? a : b) += term;
+    }
+    if (b.is_zero()) return m;
+    using namespace GiNaC;
+    if (is_ex_the_function(m, sin)) return sin(a) * cos(b) + cos(a) * sin(b);
+    if (is_ex_the_function(m, cos)) return cos(a) * cos(b) - sin(a) * sin(b);
+    if (is_ex_the_function(m, sinh)) return sinh(a) * cosh(b) + cosh(a) * sinh(b);
+    if (is_ex_the_function(m, cosh)) return cosh(a) * cosh(b) + sinh(a) * sinh(b);
+    if (is_ex_the_function(m, exp)) return exp(a) * exp(b);
+    return m;
+}
+
+// int_0^t G(t - tau) c(tau) dtau: closed form by convolution when c is a quasi-polynomial,
+// else the integral object (its constant factors outside).
+ex duhamel(const ex& G, const ex& c, const ex& t) {
+    try {
+        return convolution(quasi_polynomial::from_ex(c, t), quasi_polynomial::from_ex(G, t)).to_ex();
+    } catch (const domain_error&) {
+        // sum_i k_i(t) int_0^t f_i(tau) dtau: what does not depend on tau (t too) outside, the
+        // terms grouped by their part in tau (G(t - tau) = sin(w0 t) cos(w0 tau) - ... splits)
+        const ex& tau = integration_variable();
+        const ex e = GiNaC::expand(separate_argument(G.subs(t == t - tau), tau) * c.subs(t == tau));
+        std::vector<std::pair<ex, ex>> parts;  // f_i(tau), k_i
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+            const auto [k, f] = split_constant(GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e, tau);
+            auto p = std::find_if(parts.begin(), parts.end(), [&](const auto& x) { return x.first.is_equal(f); });
+            if (p == parts.end()) parts.push_back({f, k});
+            else p->second += k;
+        }
+        ex out = 0;
+        for (const auto& [f, k] : parts) out += k * GiNaC::integral(tau, 0, t, f);
+        return out;
+    }
+}
+
+}  // namespace
+
 // (Thm VI.2.1.1, VI.2.9-12) r = Q psi, Q the rotation by -a(t) about n = u/|u|.
-ex solve_fixed_axis(const cauchy_problem&, const fixed_axis_form& F) {
-    const ex psi = solve(*F.inertial);
+ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F) {
+    ex psi = solve(*F.inertial);
+    if (!F.across.is_zero()) {
+        // (VI.2.57-59, 62) psi_perp = -int_0^t G(t - tau) Q^T(tau) F_perp(tau) dtau
+        // F_perp = sum_q q(t) W_q, grouped by the part q(t) of each coefficient that depends on t
+        // (a constant E: one group, W = F_perp, and the two integrals I_c, I_s of VI.2.62)
+        std::vector<std::pair<ex, ex>> groups;
+        for (const vector_term& term : canonical_terms(F.across)) {
+            const auto [k, q] = split_constant(term.coefficient, P.t);
+            auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& p) { return p.first.is_equal(q); });
+            if (g == groups.end()) groups.push_back({q, k * term.monomial});
+            else g->second += k * term.monomial;
+        }
+        const ex G = impulse_response(P, F), U = norm(F.u);
+        for (const auto& [q, W] : groups) {
+            const ex C = duhamel(G, q * GiNaC::cos(F.angle), P.t);
+            const ex S = duhamel(G, q * GiNaC::sin(F.angle), P.t);
+            psi -= C * W + S / U * cross(F.u, W);
+        }
+    }
     const ex U = norm(F.u), c = GiNaC::cos(F.angle), s = GiNaC::sin(F.angle);
     return c * psi - s / U * cross(F.u, psi) + (1 - c) / (U * U) * dot(F.u, psi) * F.u;
 }
@@ -71,8 +174,8 @@ std::vector<ex> first_integrals(const cauchy_problem& P, const fixed_axis_form& 
     if (P.order() != 2)
         throw domain_error("first_integrals: the problem has order " + std::to_string(P.order()) +
                            "; the first integrals of Thm VI.2.2.3.3 are of the second-order problem");
-    if (!F.free.is_zero())
-        throw domain_error("first_integrals: the free term " + to_string(F.free) +
+    if (!F.free.is_zero() || !F.across.is_zero())
+        throw domain_error("first_integrals: the free term " + to_string(F.free + F.across) +
                            " does work on " + P.name + ": the energy is not conserved");
     const ex &r = P.unknowns[0], &r1 = P.unknowns[1];
     const ex p = r1 + cross(F.s * F.u, r);

@@ -18,9 +18,19 @@
 // along u) with psi(0) = r0, psi'(0) = v0 + w(0) x r0; psi comes from the
 // constant-coefficient solver (cauchy_problem.h). w(t) may change sign.
 //
+// A free part across u (a charge in B(t) with E across B, VI.2.53-64; gravity
+// across a turning axis, VI.2.38) enters the inertial problem rotated: with
+// F = F_par + F_perp (along and across u), Q^T F_perp = cos(a) F_perp + sin(a) n x F_perp,
+// so that psi = psi_par - sum_j (C_j(t) V_j + S_j(t) n x V_j) over the terms c_j(t) V_j
+// of F_perp, where (Duhamel, G the impulse response of m y^(M) + k y)
+//     C_j(t) = int_0^t G(t - tau) c_j(tau) cos a(tau) dtau,  S_j likewise with sin,
+// in closed form when the integrand is a quasi-polynomial (convolution, VI.1.25)
+// and otherwise kept as an integral object (GiNaC::integral in tau; the nested
+// integrals I_c, I_s of VI.2.62-63), evaluated by quadrature (numeric/quadrature.h).
+//
 // Not read here (the reading returns nothing and the caller keeps its error):
-// a w whose direction turns (VI.3: Q has no closed form), damping c r', a
-// nonlinear central force f(|r|) r/|r|, a free part not along u.
+// a w whose direction turns (VI.3: turning_frame.h), damping c r', a nonlinear
+// central force f(|r|) r/|r| (turning_frame.h).
 #pragma once
 
 #include <memory>
@@ -39,7 +49,8 @@ struct fixed_axis_form {
     GiNaC::ex u;       ///< the constant direction (not normalized)
     GiNaC::ex angle;   ///< a(t) = |u| int_0^t s(tau) dtau, closed form
     GiNaC::ex m, k;    ///< the leading coefficient and the constant k of k r
-    GiNaC::ex free;    ///< F(t), along u (0 for none)
+    GiNaC::ex free;    ///< the part of F(t) along u (0 for none): the inertial problem's own free term
+    GiNaC::ex across;  ///< the part of F(t) across u (0 for none): rotated, Q^T F, see below
     std::shared_ptr<const cauchy_problem> inertial;  ///< m psi'' + k psi + F = 0 with psi's initial values
 };
 
@@ -47,6 +58,9 @@ struct fixed_axis_form {
 /// receives the reason when P has the cross terms of a varying w but the rest
 /// is not of the form (damping, a turning axis, a force across the axis).
 std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::string* why = nullptr);
+
+/// The variable tau of the integral objects int_0^t ... dtau in solutions.
+const GiNaC::ex& integration_variable();
 
 /// r(t) = Q psi(t), coordinate-free. Errors as solve(cauchy_problem).
 GiNaC::ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F);

@@ -3,6 +3,7 @@
 
 #include "mechanics/fixed_axis.h"
 #include "mechanics/turning_frame.h"
+#include "numeric/quadrature.h"
 
 #include <algorithm>
 #include <cmath>
@@ -420,6 +421,9 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
         out.model_solution = solve_fixed_axis(P, fa);
         out.x = put_values(out.model_solution, exact);
         if (floats) out.x = normalize_trig_signs(GiNaC::evalf(out.x));
+        // integral objects (a free term across the axis) keep the nesting of the general form:
+        // its canonical form folds the scale factors that the exact rationals of the floats leave
+        if (floats && num::has_integral(out.x)) out.x = canonical(out.x);
         out.model.reduction = "method: reduction to the inertial problem (Thm VI.2.1.1, VI.2.2): w(t) = (" +
                               to_string(fa.s) + ") " + to_string(fa.u) + ", r = Q psi, Q the rotation by -(" +
                               to_string(fa.angle) + ") about " + to_string(fa.u) + "\n";

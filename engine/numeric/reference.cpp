@@ -1,5 +1,6 @@
 // symrep/numeric/reference.cpp -- see reference.h.
 #include "numeric/reference.h"
+#include "numeric/quadrature.h"
 
 #include <cln/float.h>
 #include <cln/complex.h>
@@ -220,7 +221,8 @@ GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
 }
 
 double accurate_double(const GiNaC::ex& e, int max_digits) {
-    const GiNaC::ex x = exact_floats_of(e);
+    // integral objects by quadrature first (GiNaC's evalf of one is good to 1e-8 only)
+    const GiNaC::ex x = exact_floats_of(integrals_as_numbers(e));
     cln::cl_R previous = 0;
     double result = 0;
     for (int digits = 30; digits <= std::max(30, max_digits); digits *= 2) {

@@ -305,6 +305,10 @@ std::string str(const ex& e) {
     // [a, b, c] = a . (b x c), printed so that it reads back (a list [a, b, c] would not)
     if (is_triple(e))
         return factor_text(e.op(0)) + dot_sign() + "(" + factor_text(e.op(1)) + cross_sign() + factor_text(e.op(2)) + ")";
+    // an integral object of a solution (mechanics/fixed_axis.h): int_a^b f dtau
+    if (is_a<GiNaC::integral>(e))
+        return "int_" + factor_text(e.op(1)) + "^" + factor_text(e.op(2)) + " " + factor_text(e.op(3)) + " d" +
+               str(e.op(0));
     if (is_a<GiNaC::function>(e)) {
         std::string s = ex_to<GiNaC::function>(e).get_name() + "(";
         for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + str(e.op(i));
