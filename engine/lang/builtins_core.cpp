@@ -315,7 +315,9 @@ void register_core_builtins(registry& r) {
         "scene in its smallest exact model: terms that vanish for the values are dropped, each data vector "
         "P gets the algebra of its local minimal polynomial (X if w x P = 0, X^2 + |w|^2 if w . P = 0), "
         "only the scalar problems needed are solved; prints the model, the method and why (lines "
-        "'solve: ...'), and returns the solution with the values put in, equal to solve(P) with them.",
+        "'solve: ...'), and returns the solution with the values put in, equal to solve(P) with them. "
+        "A rotating-frame problem whose w(t) turns, or with a nonlinear central field (VI.3), gives the "
+        "reduction r = F_(-w)(psi) = Q psi (Thm VI.3.2.1) as an object, evaluated by eval and verify.",
         "(VI.1.13-15), (VI.1.26-38), (VI.1.81), (II.1.23-24)", "solve([x + y = 3, x - y = 1], [x, y])", 1, 2,
         [](const builtin& b, const args_t& a, context& c) {
             if (a[0].is_problem()) return a.size() == 1 ? solve_problem(a[0]) : solve_scene(b, a, c);

@@ -264,8 +264,10 @@ void register_mechanics_builtins(registry& r) {
         "A linear Cauchy problem for x(t): the equation (x, x', x'' ... stand for the unknown and its "
         "derivatives in t) and one initial condition per order. x is a vector when an initial value is. "
         "The operator part must be a polynomial in one K = w x (terms c x, c w x x, c w x (w x x), "
-        "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. The problem is "
-        "checked when it is made.",
+        "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. Also the rotating-frame "
+        "form m (r'' + 2 w x r' + w' x r + w x (w x r)) + g(|r|) r + F(t) = 0 with w(t) of fixed direction "
+        "(closed form; F across the axis by integral objects) or turning, and a central field g(|r|) r "
+        "(k r/|r|^3: Kepler) without F (the reduction of Thm VI.3.2.1). The problem is checked when it is made.",
         "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)",
         "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
         [](const builtin& b, const args_t&, context&) -> value {
@@ -274,8 +276,9 @@ void register_mechanics_builtins(registry& r) {
     add(r, "first_integrals", "first_integrals(P)",
         "The first integrals (Thm VI.2.2.3.3, VI.3.140-141) of a problem in a frame rotating about a fixed axis, "
         "m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 with w = s(t) u (s constant or not): with "
-        "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. Each is "
-        "constant along every solution (their derivative along the equation is exactly 0).",
+        "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. For a "
+        "turning w(t) or a central field g(|r|) r (Thm VI.3.2.2): [m (|p|^2/2 + V(|r|)) (V' = g |r|/m, when "
+        "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0).",
         "(VI.3.140-141)",
         "vector u, r0, v0\nw := (1 + sin(t))*u\nfirst_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
         "4*r = 0, r(0) = r0, r'(0) = v0))",
@@ -301,7 +304,9 @@ void register_mechanics_builtins(registry& r) {
         "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md; with "
         "floating-point values, 0 up to rounding: at most 10^(5 - Digits) times the largest term, and said); "
         "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
-        "values put in: the check of a scene's solution solve(P, values).",
+        "values put in: the check of a scene's solution solve(P, values). Integral objects in s are "
+        "differentiated and merged over the same range before the zero test. A solution by reduction (VI.3) "
+        "is not a closed form: refused, use verify.",
         "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
             const auto& P0 = problem_arg(a, 0, b);
             if (a[1].is_reduction())
@@ -372,7 +377,9 @@ void register_mechanics_builtins(registry& r) {
         "several times). Where the values make the closed form singular (w = 0 in sin(|w| t)/|w|), "
         "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
         "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
-        "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases).",
+        "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases). Integral objects "
+        "(int_0^t f dtau) are evaluated by Gauss-Kronrod quadrature. e may be a solution by reduction s "
+        "(VI.3) or its derivative s': r or r' at the times (t >= 0), numerically (Q by Magnus on SO(3)).",
         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
         [](const builtin& b, const args_t& a, context&) -> value {
             if (a[0].is_reduction()) {  // r = F_(-w)(psi) (or r') at the given times, numerically
@@ -446,7 +453,8 @@ void register_mechanics_builtins(registry& r) {
         "the largest relative difference (per component, relative to that component's largest value), "
         "where it occurs, and the time each method took; returns the largest relative difference. "
         "stepper: \"rkf78\" (default, controlled Runge-Kutta-Fehlberg 7(8)), \"bulirsch_stoer\", "
-        "\"dopri5\"; tolerances 1e-12 absolute and relative.",
+        "\"dopri5\"; tolerances 1e-12 absolute and relative. For a solution by reduction (VI.3) r and r' "
+        "are compared (six components).",
         "", "vector r0\nverify(ode(r'' + 4*r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)", 4, 6,
         [](const builtin& b, const args_t& a, context& c) -> value {
             const auto& P = problem_arg(a, 0, b);

@@ -163,11 +163,14 @@ ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F) {
         for (const auto& [q, W] : groups) {
             const ex C = duhamel(G, q * GiNaC::cos(F.angle), P.t);
             const ex S = duhamel(G, q * GiNaC::sin(F.angle), P.t);
-            psi -= C * W + S / U * cross(F.u, W);
+            psi -= C * canonical(W) + S / U * canonical(cross(F.u, W));
         }
     }
     const ex U = norm(F.u), c = GiNaC::cos(F.angle), s = GiNaC::sin(F.angle);
-    return c * psi - s / U * cross(F.u, psi) + (1 - c) / (U * U) * dot(F.u, psi) * F.u;
+    const ex r = c * psi - s / U * cross(F.u, psi) + (1 - c) / (U * U) * dot(F.u, psi) * F.u;
+    // with integral objects: one term per vector (the literal parts and the dot products of
+    // a literal axis collected), which is what a reader needs to see I_c and I_s
+    return F.across.is_zero() ? r : canonical(r);
 }
 
 std::vector<ex> first_integrals(const cauchy_problem& P, const fixed_axis_form& F) {
