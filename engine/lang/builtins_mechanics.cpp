@@ -95,7 +95,8 @@ std::string precision_note(const num::verify_result& v) {
 }  // namespace
 
 value solve_problem(const value& p) {
-    if (p.as_problem().turning)  // (Thm VI.3.2.1) r = F_(-w)(psi): Q or psi has no closed form
+    if (p.as_problem().turning && !mechanics::closed_solution(p.as_problem(), *p.as_problem().turning))
+        // (Thm VI.3.2.1) r = F_(-w)(psi): Q or psi has no closed form
         return value(reduction{std::make_shared<const mechanics::reduced_solution>(
             mechanics::reduced_solution{p.problem_pointer(), {}})});
     return value(mechanics::solve(p.as_problem()));
@@ -146,7 +147,8 @@ mechanics::parameter_values scene_values(const args_t& a, std::size_t i, const b
 
 value solve_scene(const builtin& b, const args_t& a, context& c) {
     const auto& P = problem_arg(a, 0, b);
-    if (P.turning) {  // the reduction with the values bound (they are put in when it is evaluated)
+    if (P.turning && !mechanics::closed_solution(P, *P.turning)) {
+        // the reduction with the values bound (they are put in when it is evaluated)
         mechanics::reduced_solution s{a[0].problem_pointer(), scene_values(a, 1, b)};
         c.out() << b.name << ": method: reduction to the inertial problem (Thm VI.3.2.1), r = Q psi; "
                 << (!s.form().angle ? "Q numeric (Magnus on SO(3))" : "Q in closed form (VI.2.12)") << ", "

@@ -481,6 +481,8 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 ex solve(const cauchy_problem& P) {
     if (!P.reduced && P.fixed_axis) return solve_fixed_axis(P, *P.fixed_axis);
     if (!P.reduced && P.turning)
+        if (const auto x = closed_solution(P, *P.turning)) return *x;
+    if (!P.reduced && P.turning)
         throw closed_form_error("the solution " + describe_reduction(P, *P.turning) +
                                 "\nhas no closed form in t (reduced_solution.h evaluates it)");
     const operator_form F = P.reduced ? *P.reduced : reduce(P);

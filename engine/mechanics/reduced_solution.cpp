@@ -83,7 +83,12 @@ rotating_frame_problem numeric_problem(const reduced_solution& s, const value_ma
     R.w_dot = vector_of_t(put(diff_t(F.terms.w, t)), t, "w'(t)");
     R.r0 = vector_number(put(P.initial[0]), P.name + "(0)");
     if (P.order() == 2) R.v0 = vector_number(put(P.initial[1]), P.unknown_name(1) + "(0)");
-    if (F.terms.w.is_zero()) {  // Q = I
+    if (F.precessing) {  // Q = A(t) B(t): exp(-c t K_u1) exp(-t K_v)
+        const Eigen::Vector3d u1 = vector_number(put(F.precessing->u1), "the axis u1");
+        const Eigen::Vector3d v = vector_number(put(F.precessing->v), "the spin v");
+        const double c = number(put(F.precessing->c), "the precession rate");
+        R.rotation = [u1, v, c](double x) { return Eigen::Matrix3d(num::rotation_exp(-c * x * u1) * num::rotation_exp(-x * v)); };
+    } else if (F.terms.w.is_zero()) {  // Q = I
         R.axis = Eigen::Vector3d(0, 0, 1);
         R.angle = [](double) { return 0.0; };
     } else if (F.u) {
@@ -125,7 +130,9 @@ std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const valu
     // order 1: x = Q psi, psi = exp(-k t) x0, x' = Q psi' - w x x
     const double k = number(put(s.form().k), "the constant k");
     std::vector<Eigen::Matrix3d> Q;
-    if (R.axis && R.angle) {
+    if (R.rotation) {
+        for (const double t : times) Q.push_back(R.rotation(t));
+    } else if (R.axis && R.angle) {
         for (const double t : times) Q.push_back(num::fixed_direction_rotation(*R.axis, R.angle(t)));
     } else {
         Q = num::rotation_tensor(R.w, times).Q;

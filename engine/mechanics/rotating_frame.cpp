@@ -109,7 +109,9 @@ std::vector<rotating_frame_state> solve_by_reduction(const rotating_frame_proble
     const Eigen::Vector3d dpsi0 = P.v0 + P.w(0.0).cross(P.r0);
     const std::vector<rotating_frame_state> psi = inertial_solution(P.field, P.r0, dpsi0, times);
     std::vector<Eigen::Matrix3d> Q;
-    if (P.axis && P.angle) {
+    if (P.rotation) {
+        for (const double t : times) Q.push_back(P.rotation(t));
+    } else if (P.axis && P.angle) {
         for (const double t : times) Q.push_back(num::fixed_direction_rotation(*P.axis, P.angle(t)));  // (VI.2.12)
     } else {
         Q = num::rotation_tensor(P.w, times, options).Q;  // (VI.3.117)

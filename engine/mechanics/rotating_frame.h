@@ -68,6 +68,8 @@ struct rotating_frame_problem {
     Eigen::Vector3d v0 = Eigen::Vector3d::Zero();
     std::optional<Eigen::Vector3d> axis;
     std::function<double(double)> angle;
+    /// Q(t) in closed form for another reason (a regular precession); used when set.
+    std::function<Eigen::Matrix3d(double)> rotation;
 };
 
 struct rotating_frame_state {

@@ -399,11 +399,13 @@ ex evaluate_with_guard(const ex& x) {
 }  // namespace
 
 scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
-    if (!P.reduced && P.turning)
+    const std::optional<ex> closed_turning =
+        !P.reduced && P.turning ? closed_solution(P, *P.turning) : std::optional<ex>();
+    if (!P.reduced && P.turning && !closed_turning)
         throw closed_form_error("the solution " + describe_reduction(P, *P.turning) +
                                 "\nhas no closed form in t (reduced_solution.h evaluates it)");
-    if (!P.reduced && P.fixed_axis) {
-        // a frame rotating about a fixed axis (VI.2): the general reduction with the values
+    if (!P.reduced && (P.fixed_axis || closed_turning)) {
+        // a frame rotating about a fixed axis (VI.2) or precessing regularly (VI.3): the general reduction with the values
         // put in (floats as the exact numbers they are, the result evaluated once at the end)
         check_value_names(P, v);
         scene_solution out;
@@ -417,13 +419,18 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
             floats = floats || has_float(x);
             x = num::exact_floats_of(x);
         }
-        const fixed_axis_form& fa = *P.fixed_axis;
-        out.model_solution = solve_fixed_axis(P, fa);
+        out.model_solution = closed_turning ? *closed_turning : solve_fixed_axis(P, *P.fixed_axis);
         out.x = put_values(out.model_solution, exact);
         if (floats) out.x = normalize_trig_signs(GiNaC::evalf(out.x));
         // integral objects (a free term across the axis) keep the nesting of the general form:
         // its canonical form folds the scale factors that the exact rationals of the floats leave
         if (floats && num::has_integral(out.x)) out.x = canonical(out.x);
+        if (closed_turning) {
+            out.model.reduction = "method: reduction to the inertial problem (Thm VI.3.2.1): r = Q psi, Q = A B a "
+                                  "regular precession, both in closed form\n";
+            return out;
+        }
+        const fixed_axis_form& fa = *P.fixed_axis;
         out.model.reduction = "method: reduction to the inertial problem (Thm VI.2.1.1, VI.2.2): w(t) = (" +
                               to_string(fa.s) + ") " + to_string(fa.u) + ", r = Q psi, Q the rotation by -(" +
                               to_string(fa.angle) + ") about " + to_string(fa.u) + "\n";

@@ -100,6 +100,82 @@ std::optional<std::pair<ex, ex>> fixed_direction(const ex& w, const ex& t) {
     return std::make_pair(s, u);
 }
 
+std::optional<turning_frame_form::precession> regular_precession(const ex& w, const ex& t) {
+    // w as a sum of scalar functions of t times constant vectors (literals by components)
+    std::vector<std::pair<ex, ex>> terms;
+    for (const vector_term& term : canonical_terms(w)) {
+        if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
+            for (int i = 0; i < 3; ++i)
+                terms.push_back({term.coefficient * term.monomial.op(i), vector_literal(i == 0, i == 1, i == 2)});
+        } else if (term.monomial.has(t)) {
+            return std::nullopt;
+        } else {
+            terms.push_back({term.coefficient, term.monomial});
+        }
+    }
+    // the frequency c: the first argument c t of a sin or cos
+    ex c;
+    for (const auto& [k, V] : terms)
+        for (auto it = k.preorder_begin(); it != k.preorder_end() && c.is_zero(); ++it)
+            if ((is_ex_the_function(*it, GiNaC::sin) || is_ex_the_function(*it, GiNaC::cos)) && it->op(0).has(t))
+                c = GiNaC::normal(it->op(0) / t);
+    if (c.is_zero() || c.has(t)) return std::nullopt;
+    const GiNaC::symbol X("X"), Y("Y");
+    GiNaC::exmap trig;
+    trig[GiNaC::cos(c * t)] = X;
+    trig[GiNaC::sin(c * t)] = Y;
+    trig[GiNaC::cos(-c * t)] = X;
+    trig[GiNaC::sin(-c * t)] = -Y;
+    ex w0 = 0, C = 0, S = 0;
+    for (const auto& [k, V] : terms) {
+        const ex e = GiNaC::expand(GiNaC::expand(k).subs(trig));
+        if (e.has(t) || e.degree(X) > 1 || e.degree(Y) > 1 || e.coeff(X, 1).has(Y) || e.ldegree(X) < 0 ||
+            e.ldegree(Y) < 0)
+            return std::nullopt;
+        w0 += e.subs(GiNaC::lst{X == 0, Y == 0}) * V;
+        C += e.coeff(X, 1) * V;
+        S += e.coeff(Y, 1) * V;
+    }
+    // |C| = |S|, C . S = 0, C != 0, w0 along C x S (each proved; undecided: not a precession)
+    if (equal(C, 0) || !equal(dot(C, C), dot(S, S)) || !equal(dot(C, S), 0)) return std::nullopt;
+    const ex CS = cross(C, S);
+    if (!equal(cross(w0, CS), 0)) return std::nullopt;
+    // u1 x C = -S: u1 = -(C x S)/|C|^2 (|C x S| = |C| |S| = |C|^2)
+    const ex u1 = canonical(-CS / dot(C, C));
+    return turning_frame_form::precession{u1, c, canonical(C + (dot(w0, u1) - c) * u1)};
+}
+
+namespace {
+
+// The rotation by -theta about the unit vector n: Q' = -W Q for w = theta' n (VI.2.12).
+ex rotate_unit(const ex& n, const ex& theta, const ex& x) {
+    return GiNaC::cos(theta) * x - GiNaC::sin(theta) * cross(n, x) + (1 - GiNaC::cos(theta)) * dot(n, x) * n;
+}
+
+}  // namespace
+
+std::optional<ex> closed_rotation(const turning_frame_form& F, const ex& x, const ex& t) {
+    if (F.terms.w.is_zero()) return x;
+    if (F.u && F.angle) {
+        const ex U = norm(*F.u);
+        return GiNaC::cos(*F.angle) * x - GiNaC::sin(*F.angle) / U * cross(*F.u, x) +
+               (1 - GiNaC::cos(*F.angle)) / (U * U) * dot(*F.u, x) * *F.u;
+    }
+    if (F.precessing) {  // Q = A(t) B(t): the spin v first, then the carrying rotation about u1
+        const auto& p = *F.precessing;
+        const ex V = norm(p.v);
+        const ex inner = GiNaC::cos(V * t) * x - GiNaC::sin(V * t) / V * cross(p.v, x) +
+                         (1 - GiNaC::cos(V * t)) / (V * V) * dot(p.v, x) * p.v;
+        return rotate_unit(p.u1, p.c * t, inner);
+    }
+    return std::nullopt;
+}
+
+std::optional<ex> closed_solution(const cauchy_problem& P, const turning_frame_form& F) {
+    if (!F.psi) return std::nullopt;
+    return closed_rotation(F, *F.psi, P.t);
+}
+
 std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string* why) {
     bool varying = false;  // a reason is given only for a w that depends on t or a nonlinear term
     auto refuse = [&](const std::string& reason) -> std::optional<frame_terms> {
@@ -185,6 +261,7 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
     turning_frame_form F;
     F.terms = *T;
     F.w0 = T->w.subs(t == 0);
+    if (!T->w.is_zero() && !fixed_direction(T->w, t)) F.precessing = regular_precession(T->w, t);
     if (const auto d = fixed_direction(T->w, t)) {
         F.u = d->second;
         try {
@@ -225,6 +302,10 @@ std::string describe_reduction(const cauchy_problem& P, const turning_frame_form
     std::string s = r + " = F_(-w)(psi) = Q psi   (Thm VI.3.2.1)\n";
     if (F.terms.w.is_zero())
         s += "  Q = I (w = 0: an inertial frame)\n";
+    else if (F.precessing)
+        s += "  Q = A B: B the rotation by -|v| t about v = " + to_string(F.precessing->v) + ", A by -(" +
+             to_string(F.precessing->c) + ") t about u1 = " + to_string(F.precessing->u1) +
+             "   (a regular precession: w(t) = " + W + " = (" + to_string(F.precessing->c) + ") u1 + A v)\n";
     else if (!F.angle || !F.u)
         s += "  Q' = -W Q, Q(0) = I, W x = w x x, w(t) = " + W +
              (!F.u ? "   (VI.3.117; numeric: Magnus on SO(3))\n"

@@ -68,11 +68,33 @@ struct turning_frame_form {
     std::optional<GiNaC::ex> psi;        ///< the inertial solution in closed form (f = 0 or f = c p; order 1), else empty
     /// A fixed direction, w = s(t) u: the unit-free direction u and a(t) = |u| int_0^t s (nothing: turning; angle nothing when int s is not elementary).
     std::optional<GiNaC::ex> u, angle;
+    /// A regular precession, w(t) = c u1 + R_u1(-c t) v (a constant spin v carried round a
+    /// fixed axis u1 at the rate c): Q = A(t) B(t), A the rotation by -c t about u1, B by -|v| t
+    /// about v, both Rodrigues (Q' = -(K1 + A K_v A^T) Q = -W Q). Nothing otherwise.
+    struct precession {
+        GiNaC::ex u1;  ///< unit vector (exact)
+        GiNaC::ex c;   ///< the rate of the carrying rotation
+        GiNaC::ex v;   ///< the carried spin (constant vector)
+    };
+    std::optional<precession> precessing;
 };
 
 /// The reading above; nothing (and `why`, if given, the reason when the problem
 /// has the rotating-frame terms) when P is not of that form.
 std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, std::string* why = nullptr);
+
+/// Q x in closed form (VI.2.12 for a fixed direction with an elementary angle, the
+/// composition A(B x) for a regular precession); nothing when Q is numeric.
+std::optional<GiNaC::ex> closed_rotation(const turning_frame_form& F, const GiNaC::ex& x, const GiNaC::ex& t);
+
+/// w(t) = w0 + C cos(c t) + S sin(c t) with |C| = |S|, C . S = 0, C != 0 and w0 along
+/// C x S: a regular precession (see turning_frame_form::precession); nothing otherwise or
+/// when a condition cannot be decided.
+std::optional<turning_frame_form::precession> regular_precession(const GiNaC::ex& w, const GiNaC::ex& t);
+
+/// r = Q psi in closed form when both are (the oscillator or free motion, and a closed Q);
+/// nothing otherwise (the reduction is then an object: reduced_solution.h).
+std::optional<GiNaC::ex> closed_solution(const cauchy_problem& P, const turning_frame_form& F);
 
 /// The derivation r = F_{-w}(psi) as text (several lines), in the thesis's notation.
 std::string describe_reduction(const cauchy_problem& P, const turning_frame_form& F);

@@ -2,6 +2,7 @@
 #include "numeric/kepler.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/error.h"
@@ -94,6 +95,16 @@ kepler_state kepler_propagate(double mu, const Eigen::Vector3d& r0v, const Eigen
     for (int it = 0; it < 200; ++it) {
         double dF, d2F;
         const double f = F(chi, dF, d2F);
+        // the residual at rounding level: the sum's terms are what it is rounded against (near a
+        // pericentre of an eccentric orbit dF is small and the step itself never gets below
+        // 1e-15 chi, though chi is as exact as doubles allow)
+        const double z = alpha * chi * chi;
+        const double scale = std::abs(sigma0 * chi * chi * stumpff_c2(z)) + std::abs(b * chi * chi * chi * stumpff_c3(z)) +
+                             std::abs(r0 * chi) + smu * std::abs(tr);
+        if (std::abs(f) <= 8 * std::numeric_limits<double>::epsilon() * scale) {
+            converged = true;
+            break;
+        }
         const double disc = std::sqrt(std::abs((n - 1) * (n - 1) * dF * dF - n * (n - 1) * f * d2F));
         const double den = dF + (dF >= 0 ? disc : -disc);
         const double delta = den != 0 ? n * f / den : f / dF;
