@@ -170,7 +170,10 @@ first_order_system first_order(const mechanics::cauchy_problem& P, const data_va
         throw domain_error(b.name + ": the equation cannot be solved for " + P.unknown_name(M) +
                            " at these values (its leading coefficient is singular)");
     for (std::size_t i = dim; i < M * dim; ++i) sys.rhs.push_back(sys.state[i]);
-    for (std::size_t i = 0; i < dim; ++i) sys.rhs.push_back(sol.op(i).rhs());
+    // expanded: lsolve's form of a solution depends on GiNaC's term order, which varies from run
+    // to run (hash seeds); the expanded sum does not (compile() orders its terms), so the
+    // rounding of the integration, and what verify prints, is the same in every run
+    for (std::size_t i = 0; i < dim; ++i) sys.rhs.push_back(GiNaC::expand(sol.op(i).rhs()));
     for (std::size_t m = 0; m < M; ++m) {
         const ex x0 = P.is_vector && P.initial[m].is_zero() ? vector_literal(0, 0, 0) : P.initial[m];
         for (const ex& x : components(put_values_limit(x0, d)))
