@@ -108,6 +108,13 @@ namespace {
 data_values reduction_values(const reduction& r, data_values d) {
     for (const auto& [k, v] : r.solution->values.vectors) d.vectors.emplace(k, v);
     for (const auto& [k, v] : r.solution->values.scalars) d.scalars.emplace(k, v);
+    // a declared vector function w(t) given as [f1(t), f2(t), f3(t)]: w' is its derivative
+    const ex& t = r.solution->problem->t;
+    std::vector<std::pair<ex, ex>> derived;
+    for (const auto& [k, v] : d.vectors)
+        if (!diff_t(k, t).is_zero() && GiNaC::is_a<GiNaC::matrix>(v))
+            derived.push_back({derivative(k), v.diff(GiNaC::ex_to<GiNaC::symbol>(t))});
+    for (const auto& [k, v] : derived) d.vectors.emplace(k, v);
     return exact_values(std::move(d));
 }
 

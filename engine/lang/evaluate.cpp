@@ -214,6 +214,14 @@ value session::eval_inner(const node& n) {
                     for (std::size_t k = q; k < n.text.size(); ++k) d = diff_t(d, symbol("t"));
                     return d;
                 }
+                // w' of a declared vector function w(t) (vector w(t)): its derivative symbol
+                if (!get(n.text.substr(0, q))) {
+                    ex d = symbol(n.text.substr(0, q));
+                    if (is_vector_symbol(d) && !diff_t(d, symbol("t")).is_zero()) {
+                        for (std::size_t k = q; k < n.text.size(); ++k) d = derivative(d);
+                        return d;
+                    }
+                }
                 // s' of a solution by reduction: r' = Q psi' - w x r (evaluated numerically)
                 if (const value* base = get(n.text.substr(0, q)); base && base->is_reduction()) {
                     reduction r = base->as_reduction();

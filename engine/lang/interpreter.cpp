@@ -383,7 +383,8 @@ value session::evaluate(const std::string& text) {
     return last;
 }
 
-// vector a, b: a and b are vectors from now on (thesis Ch. VI);
+// vector a, b: a and b are vectors from now on (thesis Ch. VI); vector w(t): w is a
+// vector function of t, unspecified (w' its derivative: results in terms of w(t));
 // positive k: k is a positive real symbol from now on (earlier expressions keep
 // the real symbol they were built with).
 void session::declare(const node& n) {
@@ -392,7 +393,16 @@ void session::declare(const node& n) {
             throw script_error("cannot declare '" + k->text + "': it is a variable (assigned with :=)",
                                {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
         if (n.text == "vector") {
-            register_vector(symbol(k->text));
+            if (!k->kids.empty()) {  // vector w(t): a vector function of t
+                try {
+                    register_vector_function(symbol(k->text), symbol("t"));
+                } catch (const type_error& e) {
+                    throw script_error(std::string("cannot declare '") + k->text + "(t)': " + e.what(),
+                                       {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+                }
+            } else {
+                register_vector(symbol(k->text));
+            }
         } else {
             if (is_vector_symbol(symbol(k->text)))
                 throw script_error("cannot declare '" + k->text + "' positive: it is a vector",

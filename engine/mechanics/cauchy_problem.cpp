@@ -306,6 +306,13 @@ std::optional<ex> nonlinear_term(const cauchy_problem& P) {
 }
 
 operator_form reduce(const cauchy_problem& P) {
+    // a vector declared as a function of t (vector w(t)) is not a constant coefficient
+    for (const ex& v : vector_symbols(P.expression)) {
+        if (std::any_of(P.unknowns.begin(), P.unknowns.end(), [&](const ex& u) { return u.is_equal(v); })) continue;
+        if (!diff_t(v, P.t).is_zero())
+            throw domain_error("the vector " + text(v) + " is a function of " + text(P.t) +
+                               ": the coefficient it is in depends on " + text(P.t));
+    }
     if (const auto term = nonlinear_term(P)) {
         const std::string t = text(*term);
         // (a central field f(|r|) r/|r| in the rotating-frame form never gets here: ode() reads it

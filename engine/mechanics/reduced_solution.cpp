@@ -79,8 +79,10 @@ rotating_frame_problem numeric_problem(const reduced_solution& s, const value_ma
     const turning_frame_form& F = s.form();
     const ex& t = P.t;
     rotating_frame_problem R;
-    R.w = vector_of_t(put(F.terms.w), t, "w(t)");
-    R.w_dot = vector_of_t(put(diff_t(F.terms.w, t)), t, "w'(t)");
+    // w' from w with its values in (a declared w(t) gets its value as a function of t)
+    const ex wv = F.terms.w.is_zero() ? ex(0) : literal(put(F.terms.w), "w(t)");
+    R.w = vector_of_t(wv, t, "w(t)");
+    R.w_dot = vector_of_t(wv.is_zero() ? wv : wv.diff(GiNaC::ex_to<GiNaC::symbol>(t)), t, "w'(t)");
     R.r0 = vector_number(put(P.initial[0]), P.name + "(0)");
     if (P.order() == 2) R.v0 = vector_number(put(P.initial[1]), P.unknown_name(1) + "(0)");
     if (F.precessing) {  // Q = A(t) B(t): exp(-c t K_u1) exp(-t K_v)

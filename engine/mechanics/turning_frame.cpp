@@ -16,6 +16,14 @@ namespace {
 
 using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
 
+// e depends on t: t in it, or a vector declared as a function of t (vector w(t))
+bool depends_on(const ex& e, const ex& t) {
+    if (e.has(t)) return true;
+    for (const ex& v : vector_symbols(e))
+        if (!diff_t(v, t).is_zero()) return true;
+    return false;
+}
+
 bool has_unknown(const cauchy_problem& P, const ex& e);
 
 // E split by the unknowns: part k holds the terms in x^(k) (k <= M), part M + 1 those
@@ -94,7 +102,7 @@ std::optional<std::pair<ex, ex>> fixed_direction(const ex& w, const ex& t) {
     ex u = 0;
     for (const vector_term& term : wt) {
         const ex ratio = GiNaC::normal(term.coefficient / s);
-        if (ratio.has(t) || term.monomial.has(t)) return std::nullopt;  // the direction turns
+        if (ratio.has(t) || depends_on(term.monomial, t)) return std::nullopt;  // the direction turns
         u += ratio * term.monomial;
     }
     return std::make_pair(s, u);
@@ -107,7 +115,7 @@ std::optional<turning_frame_form::precession> regular_precession(const ex& w, co
         if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
             for (int i = 0; i < 3; ++i)
                 terms.push_back({term.coefficient * term.monomial.op(i), vector_literal(i == 0, i == 1, i == 2)});
-        } else if (term.monomial.has(t)) {
+        } else if (depends_on(term.monomial, t)) {
             return std::nullopt;
         } else {
             terms.push_back({term.coefficient, term.monomial});
@@ -208,7 +216,7 @@ std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string
     T.m = *m;
     T.w = cross1 / (int(M) * *m);
     T.p = GiNaC::possymbol("p");
-    varying = T.w.has(t);
+    varying = depends_on(T.w, t);  // t in it, or a declared vector function w(t)
     T.form = "the problem has the rotating-frame terms of w(t) = " + to_string(T.w) + " (" +
              to_string(int(M) * T.w) + " x " + P.unknown_name(M - 1) + "), but ";
     const ex R = M == 2 ? *m * (xM + 2 * cross(T.w, xc) + cross(diff_t(T.w, t), x) + cross(T.w, cross(T.w, x)))
@@ -248,7 +256,7 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
         if (why) *why = inner;
         return std::nullopt;
     }
-    const bool reasons = T->w.has(P.t) || T->g.has(T->p);
+    const bool reasons = depends_on(T->w, P.t) || T->g.has(T->p);
     auto refuse = [&](const std::string& reason) -> std::optional<turning_frame_form> {
         if (why && reasons) *why = reason;
         return std::nullopt;
@@ -261,6 +269,12 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
     turning_frame_form F;
     F.terms = *T;
     F.w0 = T->w.subs(t == 0);
+    {  // a declared vector function w(t) at t = 0: the vector w_0
+        std::map<ex, ex, GiNaC::ex_is_less> at0;
+        for (const ex& v : vector_symbols(F.w0))
+            if (!diff_t(v, t).is_zero()) at0[v] = vector_symbol(to_string(v) + "_0");
+        if (!at0.empty()) F.w0 = subs_vectors(F.w0, at0);
+    }
     if (!T->w.is_zero() && !fixed_direction(T->w, t)) F.precessing = regular_precession(T->w, t);
     if (const auto d = fixed_direction(T->w, t)) {
         F.u = d->second;

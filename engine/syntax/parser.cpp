@@ -175,7 +175,7 @@ node_ptr parser::vector_product() {
     return n;
 }
 
-// vector a, b, c   /   positive w0, g
+// vector a, b, c   /   vector w(t)   /   positive w0, g
 node_ptr parser::declaration() {
     const token& kw = get();
     node_ptr n = make(node::declare, kw, kw.text);
@@ -187,6 +187,17 @@ node_ptr parser::declaration() {
             fail(name, "cannot declare '" + name.text + "': primes name derivatives");
         get();
         n->kids.push_back(make(node::ident, name, name.text));
+        // vector w(t): a vector function of t, left unspecified (its derivative is w')
+        if (kw.text == "vector" && is_op("(")) {
+            get();
+            const token& var = peek();
+            if (var.kind != tok::ident || var.text != "t")
+                fail(var, "a declared vector function depends on t: vector " + name.text + "(t)");
+            get();
+            if (!is_op(")")) fail(peek(), "expected ')' after 'vector " + name.text + "(t'");
+            get();
+            n->kids.back()->kids.push_back(make(node::ident, var, var.text));
+        }
         if (!is_op(",")) break;
         get();
     }
