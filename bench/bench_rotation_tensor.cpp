@@ -124,9 +124,11 @@ void RotatingKepler_Reduction(benchmark::State& state) {
 }
 BENCHMARK(RotatingKepler_Reduction)->DenseRange(4, 14, 2)->Unit(benchmark::kMicrosecond);
 
-void RotatingKepler_Odeint_rkf78(benchmark::State& state) {
+template <num::stepper_kind K>
+void RotatingKepler_Odeint(benchmark::State& state) {
     const mechanics::rotating_frame_problem P = kepler_problem();
     num::integration_options o;
+    o.stepper = K;
     o.rel_tol = o.abs_tol = tolerance_of(state);
     Vector3d r;
     for (auto _ : state) {
@@ -135,7 +137,55 @@ void RotatingKepler_Odeint_rkf78(benchmark::State& state) {
     }
     state.counters["error"] = (r - kepler_reference()).norm() / kepler_reference().norm();
 }
+void RotatingKepler_Odeint_rkf78(benchmark::State& s) { RotatingKepler_Odeint<num::stepper_kind::rkf78>(s); }
+void RotatingKepler_Odeint_dopri5(benchmark::State& s) { RotatingKepler_Odeint<num::stepper_kind::dopri5>(s); }
+void RotatingKepler_Odeint_bulirsch_stoer(benchmark::State& s) {
+    RotatingKepler_Odeint<num::stepper_kind::bulirsch_stoer>(s);
+}
 BENCHMARK(RotatingKepler_Odeint_rkf78)->DenseRange(4, 14, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(RotatingKepler_Odeint_dopri5)->DenseRange(4, 12, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(RotatingKepler_Odeint_bulirsch_stoer)->DenseRange(4, 14, 2)->Unit(benchmark::kMicrosecond);
+// rk4 has no error control: range(0) = log2 of the steps per unit time
+void RotatingKepler_Odeint_rk4(benchmark::State& state) {
+    const mechanics::rotating_frame_problem P = kepler_problem();
+    num::integration_options o;
+    o.stepper = num::stepper_kind::rk4;
+    o.fixed_step = std::ldexp(1.0, -int(state.range(0)));
+    Vector3d r;
+    for (auto _ : state) {
+        r = mechanics::integrate_rotating_frame(P, {T}, o)[0].r;
+        benchmark::DoNotOptimize(std::as_const(r));
+    }
+    state.counters["error"] = (r - kepler_reference()).norm() / kepler_reference().norm();
+}
+BENCHMARK(RotatingKepler_Odeint_rk4)->DenseRange(4, 10, 2)->Unit(benchmark::kMicrosecond);
+
+// (Thm VI.3.2.2) drift of the energy integral E (VI.3.140) over a long time: the reduction
+// keeps it to rounding (psi exactly on its conic, Q orthogonal), an integrator lets it drift.
+// range(0) = the time in units of 100.
+template <bool Reduction>
+void RotatingKepler_EnergyDrift(benchmark::State& state) {
+    const mechanics::rotating_frame_problem P = kepler_problem();
+    const double t_end = 100.0 * double(state.range(0));
+    mechanics::rotating_frame_state s;
+    for (auto _ : state) {
+        if constexpr (Reduction) {
+            s = mechanics::solve_by_reduction(P, {t_end})[0];
+        } else {
+            num::integration_options o;
+            o.rel_tol = o.abs_tol = 1e-12;
+            s = mechanics::integrate_rotating_frame(P, {t_end}, o)[0];
+        }
+        benchmark::DoNotOptimize(std::as_const(s));
+    }
+    const double E0 = *mechanics::energy_integral(P, 0.0, {P.r0, P.v0});
+    state.counters["time"] = t_end;
+    state.counters["energy_drift"] = std::abs(*mechanics::energy_integral(P, t_end, s) - E0) / std::abs(E0);
+}
+void RotatingKepler_EnergyDrift_Reduction(benchmark::State& s) { RotatingKepler_EnergyDrift<true>(s); }
+void RotatingKepler_EnergyDrift_rkf78(benchmark::State& s) { RotatingKepler_EnergyDrift<false>(s); }
+BENCHMARK(RotatingKepler_EnergyDrift_Reduction)->RangeMultiplier(4)->Range(1, 64)->Unit(benchmark::kMillisecond);
+BENCHMARK(RotatingKepler_EnergyDrift_rkf78)->RangeMultiplier(4)->Range(1, 64)->Unit(benchmark::kMillisecond);
 
 // Exact relative motion (two Kepler orbits rotated into the LVLH frame) and the
 // error of the Clohessy-Wiltshire model: range(0) = log10(separation in m), range(1) = orbits.

@@ -5,7 +5,8 @@
 #
 # usage: bash bench/plot_rotation_tensor.sh [build-dir]          (default build dir: build)
 #        PLOT_ONLY=1 bash bench/plot_rotation_tensor.sh   (redraw from the CSV files in docs/figures)
-# Output: docs/figures/rotation_tensor_wp.{csv,png} and docs/figures/relative_motion_cw.{csv,png}.
+# Output: docs/figures/rotation_tensor_wp.{csv,png}, rotating_kepler_drift.{csv,png} and
+# relative_motion_cw.{csv,png}.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=${1:-build}
@@ -17,14 +18,23 @@ cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench
 csv=$(mktemp)
 rel=$(mktemp)
 # two runs: the CSV reporter wants the same counters in every row of one run
-"$build"/symrep_bench --benchmark_filter='RotationTensor|RotatingKepler' --benchmark_min_time=0.2 \
+"$build"/symrep_bench --benchmark_filter='RotationTensor|RotatingKepler_(Reduction|Odeint)' --benchmark_min_time=0.2 \
     --benchmark_format=csv > "$csv" 2>/dev/null
 "$build"/symrep_bench --benchmark_filter='RelativeMotion' --benchmark_format=csv > "$rel" 2>/dev/null
+drift=$(mktemp)
+"$build"/symrep_bench --benchmark_filter='EnergyDrift' --benchmark_format=csv > "$drift" 2>/dev/null
+# method, time, cpu milliseconds, relative drift of the energy integral
+{
+    echo "method,time,cpu_ms,energy_drift"
+    grep -E '^"RotatingKepler_EnergyDrift' "$drift" | tr -d '"' |
+        awk -F, '{split($1, a, "/"); sub("RotatingKepler_EnergyDrift_", "", a[1]); printf "%s,%s,%s,%s\n", a[1], $12, $4, $11}'
+} > "$out/rotating_kepler_drift.csv"
 # method, tolerance exponent, cpu microseconds, error, orthogonality, w evaluations
 {
     echo "method,tolerance,cpu_us,error,orthogonality,w_evals"
     grep -E '^"(RotationTensor|RotatingKepler)' "$csv" | tr -d '"' |
-        awk -F, '{split($1, a, "/"); printf "%s,1e-%s,%s,%s,%s,%s\n", a[1], a[2], $4, $11, $12, $13}'
+        awk -F, '{split($1, a, "/"); tol = (a[1] ~ /rk4/ ? "step 2^-" : "1e-") a[2];
+                  printf "%s,%s,%s,%s,%s,%s\n", a[1], tol, $4, $11, $12, $13}'
 } > "$out/rotation_tensor_wp.csv"
 # separation (m), orbits, CPU microseconds of the exact form, relative error of Clohessy-Wiltshire
 {
@@ -52,8 +62,19 @@ plot "< grep Magnus6 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 
 set title "Kepler in that frame (VI.3.153): r at t = 200"
 set ylabel "relative error of r"
 plot "< grep RotatingKepler_Reduction $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 7 title "reduction r = Q psi (Magnus + universal variables)", \
-     "< grep RotatingKepler_Odeint $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 5 title "rkf78 on the rotating-frame ODE"
+     "< grep RotatingKepler_Odeint_rkf78 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 5 title "rkf78 on the rotating-frame ODE", \
+     "< grep RotatingKepler_Odeint_dopri5 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 9 title "dopri5", \
+     "< grep RotatingKepler_Odeint_bulirsch_stoer $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 11 title "Bulirsch-Stoer", \
+     "< grep RotatingKepler_Odeint_rk4 $out/rotation_tensor_wp.csv" using 3:4 with linespoints pt 13 title "rk4 (fixed steps)"
 unset multiplot
+set terminal pngcairo size 640,480 font ",10"
+set output "$out/rotating_kepler_drift.png"
+set title "Kepler in the turning frame: drift of the energy integral (VI.3.140)"
+set xlabel "time"
+set ylabel "|E(t) - E(0)| / |E(0)|"
+set key top left
+plot "< grep Reduction $out/rotating_kepler_drift.csv" using 2:(\$4 > 0 ? \$4 : 1e-17) with linespoints pt 7 title "reduction (0 plotted as 1e-17)", \
+     "< grep rkf78 $out/rotating_kepler_drift.csv" using 2:4 with linespoints pt 5 title "rkf78 at 1e-12"
 set terminal pngcairo size 640,480 font ",10"
 set output "$out/relative_motion_cw.png"
 unset multiplot

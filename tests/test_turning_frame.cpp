@@ -345,3 +345,17 @@ TEST(TurningFrame, ADeclaredVectorFunctionW) {
     EXPECT_TRUE(t.val("c").is_reduction());
     EXPECT_NE(t.run("vector z(s)"), 0);  // only functions of t
 }
+
+// diff(s, t) of a solution by reduction is s' (r'); a scene's bound values serve eval and verify.
+TEST(TurningFrame, DerivativeAndBoundValues) {
+    test_session t;
+    ASSERT_EQ(t.run(std::string("vector r0, v0\n") + foucault_w + "\n" + foucault_values +
+                    "\nP := ode(r'' + 2*w x r' + w' x r + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)\n"
+                    "s := solve(P, vals)"),
+              0)
+        << t.err.str();
+    EXPECT_LT((triple(t.val("eval(diff(s, t), [], t = 2)")) - triple(t.val("eval(s', [], t = 2)"))).norm(), 1e-16);
+    EXPECT_LT((triple(t.val("eval(s', [], t = 0)")) - Eigen::Vector3d(0.1, 0.3, 0.7)).norm(), 1e-15);
+    EXPECT_LT(number(t, "verify(P, s, [], 10)"), 1e-9);
+    EXPECT_NE(t.run("diff(s, t, 2)"), 0);
+}

@@ -251,10 +251,20 @@ void register_core_builtins(registry& r) {
         });
     add(r, "diff", "diff(e, x [, n])",
         "The n-th derivative (default 1) of an expression, of each coordinate of an element, or of each entry "
-        "of a list, with respect to the symbol x.",
+        "of a list, with respect to the symbol x. Of a solution by reduction (VI.3) in t: r' (as s').",
         "", "diff(sin(x)*x, x)", 2, 3, [](const builtin& b, const args_t& a, context&) {
             const GiNaC::symbol& x = arg_symbol(a, 1, b);
             const long n = a.size() > 2 ? arg_int(a, 2, b, 0, 1000) : 1;
+            if (a[0].is_reduction()) {  // a solution by reduction (VI.3): its derivative in t is r'
+                reduction r = a[0].as_reduction();
+                if (!x.is_equal(ex_to<GiNaC::symbol>(r.solution->problem->t)))
+                    throw type_error(b.name + ": a solution by reduction depends on " +
+                                     output::print_ex(r.solution->problem->t) + " only");
+                r.derivative += int(n);
+                if (r.derivative > 1)
+                    throw type_error(b.name + ": a solution by reduction has its first derivative only, not higher ones");
+                return value(r);
+            }
             return map_value(a[0], b, [&](const ex& e) {
                 guard_terms(expression_nodes(e) * double(n), b.name.c_str());
                 return e.diff(x, static_cast<unsigned>(n));
