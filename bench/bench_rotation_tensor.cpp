@@ -206,4 +206,27 @@ void RelativeMotion_ExactAgainstCW(benchmark::State& state) {
 }
 BENCHMARK(RelativeMotion_ExactAgainstCW)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {1, 10}})->Unit(benchmark::kMicrosecond);
 
+// A target on an orbit with e ~ 0.3 (perigee 7000 km): the elliptic linear model (Tschauner-
+// Hempel, integrated; Yamanaka-Ankersen is its closed form) and Clohessy-Wiltshire with the mean
+// motion, against the exact motion. range(0) = log10(separation in m), range(1) = orbits.
+void RelativeMotion_EccentricAgainstLinear(benchmark::State& state) {
+    const double mu = 398600.4418;
+    const Vector3d R0(7000.0, 0, 0), V0(0, 8.5, 1.2);
+    const double a = 1 / (2 / R0.norm() - V0.squaredNorm() / mu), n = std::sqrt(mu / (a * a * a));
+    const double d = std::pow(10.0, double(state.range(0))) / 1000.0;  // km
+    const double t = double(state.range(1)) * 2 * std::numbers::pi / n;
+    const mechanics::relative_state s{d * Vector3d(0.3, -0.8, 0.5).normalized(), 1e-4 * d * Vector3d(0.2, 0.1, -0.3)};
+    mechanics::relative_state th;
+    for (auto _ : state) {
+        th = mechanics::tschauner_hempel(mu, R0, V0, s, {t})[0];
+        benchmark::DoNotOptimize(std::as_const(th));
+    }
+    const mechanics::relative_state exact = mechanics::relative_motion_exact(mu, R0, V0, s, t);
+    const mechanics::relative_state cw = mechanics::clohessy_wiltshire(n, s, t);
+    state.counters["separation_m"] = d * 1000.0;
+    state.counters["th_relative_error"] = (th.position - exact.position).norm() / exact.position.norm();
+    state.counters["cw_relative_error"] = (cw.position - exact.position).norm() / exact.position.norm();
+}
+BENCHMARK(RelativeMotion_EccentricAgainstLinear)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {1, 10}})->Unit(benchmark::kMillisecond);
+
 }  // namespace

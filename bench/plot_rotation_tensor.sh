@@ -5,8 +5,8 @@
 #
 # usage: bash bench/plot_rotation_tensor.sh [build-dir]          (default build dir: build)
 #        PLOT_ONLY=1 bash bench/plot_rotation_tensor.sh   (redraw from the CSV files in docs/figures)
-# Output: docs/figures/rotation_tensor_wp.{csv,png}, rotating_kepler_drift.{csv,png} and
-# relative_motion_cw.{csv,png}.
+# Output: docs/figures/rotation_tensor_wp.{csv,png}, rotating_kepler_drift.{csv,png},
+# relative_motion_cw.{csv,png} and relative_motion_elliptic.{csv,png}.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=${1:-build}
@@ -20,7 +20,15 @@ rel=$(mktemp)
 # two runs: the CSV reporter wants the same counters in every row of one run
 "$build"/symrep_bench --benchmark_filter='RotationTensor|RotatingKepler_(Reduction|Odeint)' --benchmark_min_time=0.2 \
     --benchmark_format=csv > "$csv" 2>/dev/null
-"$build"/symrep_bench --benchmark_filter='RelativeMotion' --benchmark_format=csv > "$rel" 2>/dev/null
+"$build"/symrep_bench --benchmark_filter='RelativeMotion_ExactAgainstCW' --benchmark_format=csv > "$rel" 2>/dev/null
+ecc=$(mktemp)
+"$build"/symrep_bench --benchmark_filter='RelativeMotion_Eccentric' --benchmark_format=csv > "$ecc" 2>/dev/null
+# separation (m), orbits, CPU ms of the linear model, relative errors of Clohessy-Wiltshire and Tschauner-Hempel
+{
+    echo "separation_m,orbits,th_cpu_ms,cw_relative_error,th_relative_error"
+    grep -E '^"RelativeMotion_Eccentric' "$ecc" | tr -d '"' |
+        awk -F, '{split($1, a, "/"); printf "%s,%s,%s,%s,%s\n", $12, a[3], $4, $11, $13}'
+} > "$out/relative_motion_elliptic.csv"
 drift=$(mktemp)
 "$build"/symrep_bench --benchmark_filter='EnergyDrift' --benchmark_format=csv > "$drift" 2>/dev/null
 # method, time, cpu milliseconds, relative drift of the energy integral
@@ -84,5 +92,11 @@ set ylabel "relative error of the CW position"
 set key top left
 plot "< awk -F, '\$2 == 1' $out/relative_motion_cw.csv" using 1:4 with linespoints pt 7 title "after 1 orbit", \
      "< awk -F, '\$2 == 10' $out/relative_motion_cw.csv" using 1:4 with linespoints pt 5 title "after 10 orbits"
+set output "$out/relative_motion_elliptic.png"
+set title "Linear models against the exact relative motion, target with e = 0.3"
+set ylabel "relative error of the linear model's position"
+plot "< awk -F, '\$2 == 1' $out/relative_motion_elliptic.csv" using 1:5 with linespoints pt 7 title "Tschauner-Hempel, 1 orbit", \
+     "< awk -F, '\$2 == 10' $out/relative_motion_elliptic.csv" using 1:5 with linespoints pt 5 title "Tschauner-Hempel, 10 orbits", \
+     "< awk -F, '\$2 == 1' $out/relative_motion_elliptic.csv" using 1:4 with linespoints pt 9 title "Clohessy-Wiltshire (mean motion), 1 orbit"
 GP
 echo "wrote $out/rotation_tensor_wp.png"

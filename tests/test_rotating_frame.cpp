@@ -375,4 +375,38 @@ TEST(RelativeMotion, ClohessyWiltshireIsTheFirstOrderLimitForACircularTarget) {
     }
 }
 
+// The elliptic linear model (Tschauner-Hempel): for a circular target it is Clohessy-Wiltshire
+// (1e-9 relative: odeint at 1e-13 over one orbit); for a target with e ~ 0.3 it is the first-order
+// limit of the exact motion (relative error ~ d/R, tenfold for a tenfold separation), where
+// Clohessy-Wiltshire with the mean motion stays O(1) wrong at every separation.
+TEST(RelativeMotion, TschaunerHempelIsTheFirstOrderLimitForAnEccentricTarget) {
+    {
+        const double r = 7000.0, n = std::sqrt(mu / (r * r * r));
+        const relative_state s{Vector3d(0.3, -0.8, 0.5), Vector3d(2e-5, 1e-5, -3e-5)};
+        const double T = 2 * std::numbers::pi / n;
+        const relative_state th = tschauner_hempel(mu, Vector3d(r, 0, 0), Vector3d(0, n * r, 0), s, {T})[0];
+        const relative_state cw = clohessy_wiltshire(n, s, T);
+        EXPECT_LT((th.position - cw.position).norm(), 1e-9 * cw.position.norm());
+        EXPECT_LT((th.velocity - cw.velocity).norm(), 1e-9 * cw.velocity.norm());
+    }
+    const Vector3d R0(7000.0, 0.0, 0.0), V0(0.0, 8.5, 1.2);  // e ~ 0.3
+    const double a = 1 / (2 / R0.norm() - V0.squaredNorm() / mu), T = 2 * std::numbers::pi * std::sqrt(a * a * a / mu);
+    double previous = 0;
+    for (double d : {0.01, 0.1, 1.0, 10.0}) {
+        const relative_state s{d * Vector3d(0.3, -0.8, 0.5).normalized(), 1e-4 * d * Vector3d(0.2, 0.1, -0.3)};
+        const relative_state exact = relative_motion_exact(mu, R0, V0, s, T);
+        const relative_state th = tschauner_hempel(mu, R0, V0, s, {T})[0];
+        const double rel = (th.position - exact.position).norm() / exact.position.norm();
+        EXPECT_LT(rel, 20.0 * d / R0.norm()) << d;
+        if (previous > 0) {
+            EXPECT_GT(rel / previous, 5.0) << d;
+            EXPECT_LT(rel / previous, 20.0) << d;
+        }
+        previous = rel;
+        const double n = std::sqrt(mu / (a * a * a));
+        const relative_state cw = clohessy_wiltshire(n, s, T);
+        EXPECT_GT((cw.position - exact.position).norm(), 0.1 * exact.position.norm()) << d;
+    }
+}
+
 }  // namespace relative

@@ -128,7 +128,11 @@ std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const valu
                                            const std::vector<double>& times) {
     const cauchy_problem& P = *s.problem;
     const rotating_frame_problem R = numeric_problem(s, put);
-    if (P.order() == 2) return solve_by_reduction(R, times);
+    // a bound on the Magnus steps (about 10 s), so that t = 1e12 is refused with a reason
+    // instead of running for hours
+    num::rotation_tensor_options o;
+    o.max_steps = 5'000'000;
+    if (P.order() == 2) return solve_by_reduction(R, times, o);
     // order 1: x = Q psi, psi = exp(-k t) x0, x' = Q psi' - w x x
     const double k = number(put(s.form().k), "the constant k");
     std::vector<Eigen::Matrix3d> Q;
@@ -137,7 +141,7 @@ std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const valu
     } else if (R.axis && R.angle) {
         for (const double t : times) Q.push_back(num::fixed_direction_rotation(*R.axis, R.angle(t)));
     } else {
-        Q = num::rotation_tensor(R.w, times).Q;
+        Q = num::rotation_tensor(R.w, times, o).Q;
     }
     std::vector<rotating_frame_state> out;
     for (std::size_t i = 0; i < times.size(); ++i) {

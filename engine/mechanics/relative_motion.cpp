@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "numeric/integrate.h"
 #include "numeric/kepler.h"
 
 namespace symrep::mechanics {
@@ -52,6 +53,40 @@ relative_state clohessy_wiltshire(double n, const relative_state& s, double t) {
     out.velocity = Eigen::Vector3d(3 * n * sn * p.x() + c * v.x() + 2 * sn * v.y(),
                                    -6 * n * (1 - c) * p.x() - 2 * sn * v.x() + (4 * c - 3) * v.y(),
                                    -n * sn * p.z() + c * v.z());
+    return out;
+}
+
+std::vector<relative_state> tschauner_hempel(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
+                                             const relative_state& start, const std::vector<double>& times,
+                                             double rel_tol) {
+    lvlh_axes(R0, V0);  // refuses a radial target orbit
+    // state: the target (R, V) in inertial components, then rho, rho' in the LVLH frame
+    const num::rhs_function rhs = [mu](double, const double* y, double* dy) {
+        const Eigen::Vector3d R(y[0], y[1], y[2]), V(y[3], y[4], y[5]), p(y[6], y[7], y[8]), v(y[9], y[10], y[11]);
+        const double r = R.norm(), h = R.cross(V).norm(), rdot = R.dot(V) / r;
+        const Eigen::Vector3d w(0, 0, h / (r * r)), wd(0, 0, -2 * h * rdot / (r * r * r));
+        const double k = mu / (r * r * r);
+        // (rho - 3 (rho . x) x) with x = (1, 0, 0) in the frame
+        const Eigen::Vector3d tidal(-2 * p.x(), p.y(), p.z());
+        const Eigen::Vector3d a = -2 * w.cross(v) - wd.cross(p) - w.cross(w.cross(p)) - k * tidal;
+        const Eigen::Vector3d A = -k * R;
+        for (int i = 0; i < 3; ++i) {
+            dy[i] = V[i], dy[3 + i] = A[i], dy[6 + i] = v[i], dy[9 + i] = a[i];
+        }
+    };
+    std::vector<double> y0(R0.data(), R0.data() + 3);
+    y0.insert(y0.end(), V0.data(), V0.data() + 3);
+    y0.insert(y0.end(), start.position.data(), start.position.data() + 3);
+    y0.insert(y0.end(), start.velocity.data(), start.velocity.data() + 3);
+    num::integration_options o;
+    o.rel_tol = rel_tol;
+    o.abs_tol = rel_tol * std::max(start.position.norm(), 1e-300);
+    const num::integration_result res = num::integrate(rhs, 0.0, y0, times, o);
+    std::vector<relative_state> out;
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const Eigen::VectorXd y = res.states.row(Eigen::Index(k));
+        out.push_back({y.segment<3>(6), y.segment<3>(9)});
+    }
     return out;
 }
 

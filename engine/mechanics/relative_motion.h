@@ -14,11 +14,14 @@
 // eccentricity, evaluated to rounding; no linearization.
 //
 // clohessy_wiltshire() is the classical linear model for a circular target
-// (mean motion n): the first-order terms of the above in |rho|/|R|.
+// (mean motion n): the first-order terms of the above in |rho|/|R|;
+// tschauner_hempel() the linear model for an elliptic target.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include <vector>
 
 namespace symrep::mechanics {
 
@@ -42,5 +45,15 @@ relative_state relative_motion_exact(double mu, const Eigen::Vector3d& R0, const
 
 /// The Clohessy-Wiltshire solution for a circular target of mean motion n.
 relative_state clohessy_wiltshire(double n, const relative_state& start, double t);
+
+/// The linear model for a target on an elliptic orbit (Tschauner-Hempel): the
+/// relative equation above linearized in rho,
+///     rho'' + 2 w x rho' + w' x rho + w x (w x rho) + (mu/|R|^3) (rho - 3 (rho . x) x) = 0,
+/// w = |h|/|R|^2 z (x radial, z normal), integrated numerically together with the
+/// target's orbit (Boost.Odeint rkf78 at rel_tol; Yamanaka-Ankersen's state-transition
+/// matrix is the closed form of the same linear equation). At each of `times` (sorted, >= 0).
+std::vector<relative_state> tschauner_hempel(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
+                                             const relative_state& start, const std::vector<double>& times,
+                                             double rel_tol = 1e-13);
 
 }  // namespace symrep::mechanics

@@ -112,7 +112,8 @@ rotation_tensor_result rotation_tensor(const angular_velocity& w, const std::vec
                 t = t_next;
                 if (++res.steps > options.max_steps)
                     throw error("rotation_tensor: more than " + std::to_string(options.max_steps) +
-                                " steps (is w(t) smooth?)");
+                                " steps to reach t = " + std::to_string(target) +
+                                " (a very long time for this w(t), or a w(t) that is not smooth)");
             } else if (step <= 1e-10 * std::max(1.0, t)) {
                 throw error("rotation_tensor: the angular velocity is not smooth near t = " + std::to_string(t) +
                             " (the step fell below 1e-10 of t)");
