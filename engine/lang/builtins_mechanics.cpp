@@ -22,6 +22,7 @@
 #include "mechanics/scene.h"
 #include "numeric/reference.h"
 #include "mechanics/fixed_axis.h"
+#include "mechanics/relative_motion.h"
 #include "mechanics/turning_frame.h"
 #include "numeric/verify.h"
 #include "numeric/quadrature.h"
@@ -139,6 +140,39 @@ std::vector<Eigen::Vector3d> reduction_at(const reduction& r, const data_values&
 }
 
 value triple_value(const Eigen::Vector3d& x) { return value(list{value(ex(x.x())), value(ex(x.y())), value(ex(x.z()))}); }
+
+// Argument i as a vector of numbers (a literal [x, y, z] whose entries evaluate to reals).
+Eigen::Vector3d number_vector(const args_t& a, std::size_t i, const builtin& b, const std::string& what) {
+    const ex v = vector_arg(a, i, b);
+    if (v.is_zero()) return Eigen::Vector3d::Zero();
+    if (!is_vector_literal(v))
+        throw type_error(b.name + ": " + what + " (argument " + std::to_string(i + 1) +
+                         ") must be a vector of numbers [x, y, z], not " + print_ex(v));
+    return {to_double(v.op(0), b, what), to_double(v.op(1), b, what), to_double(v.op(2), b, what)};
+}
+
+// The times of a last argument t = T or t = [T1, T2, ...] (numbers >= 0, sorted here).
+std::vector<double> times_arg(const args_t& a, std::size_t i, const builtin& b, bool& several) {
+    const ex& tr = arg_ex(a, i, b);
+    if (!GiNaC::is_a<GiNaC::relational>(tr) || !GiNaC::is_a<GiNaC::symbol>(tr.lhs()))
+        throw type_error(b.name + ": argument " + std::to_string(i + 1) + " must be t = T (usage: " + b.signature + ")");
+    const ex T = tr.rhs();
+    several = GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T);
+    std::vector<double> out;
+    for (std::size_t k = 0; k < (several ? T.nops() : 1); ++k) {
+        const double x = to_double(several ? T.op(k) : T, b, "the time");
+        if (!(x >= 0) || !std::isfinite(x)) throw type_error(b.name + ": the times must be finite and >= 0");
+        out.push_back(x);
+    }
+    return out;
+}
+
+// [[x, y, z], [x', y', z']] for one time, a list of those for several.
+value relative_states(const std::vector<mechanics::relative_state>& s, bool several) {
+    list out;
+    for (const auto& x : s) out.push_back(value(list{triple_value(x.position), triple_value(x.velocity)}));
+    return several ? value(out) : out[0];
+}
 
 }  // namespace
 
@@ -509,6 +543,61 @@ void register_mechanics_builtins(registry& r) {
                     << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
                     << "\n";
             return value(ex(v.max_relative_difference));
+        });
+    add(r, "relative_motion", "relative_motion(mu, R0, V0, rho0, rho0', t = T)",
+        "Exact relative orbital motion: a chaser seen from the LVLH frame (x radial, y along the track, z "
+        "normal) of a target on a Keplerian orbit (R0, V0 inertial, gravitational parameter mu), starting at rho0 "
+        "with relative velocity rho0' (LVLH components). The frame turns with w = |h|/|R|^2 about the orbit "
+        "normal; undone as in Thm VI.3.2.1 the motion is the difference of two Kepler orbits (universal "
+        "variables), any eccentricity, no linearization. Returns [rho, rho'] at T (a list of them for a list of "
+        "times).",
+        "(VI.3.132-138)", "relative_motion(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], t = 600)",
+        6, 6, [](const builtin& b, const args_t& a, context&) -> value {
+            const double mu = to_double(arg_ex(a, 0, b), b, "mu");
+            const Eigen::Vector3d R0 = number_vector(a, 1, b, "R0"), V0 = number_vector(a, 2, b, "V0");
+            const mechanics::relative_state s{number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")};
+            bool several = false;
+            std::vector<mechanics::relative_state> out;
+            for (const double t : times_arg(a, 5, b, several))
+                out.push_back(mechanics::relative_motion_exact(mu, R0, V0, s, t));
+            return relative_states(out, several);
+        });
+    add(r, "clohessy_wiltshire", "clohessy_wiltshire(n, rho0, rho0', t = T)",
+        "The Clohessy-Wiltshire solution: the relative motion linearized about a circular target orbit of mean "
+        "motion n (LVLH components as for relative_motion), the first-order limit of the exact motion in the "
+        "separation. Returns [rho, rho'] at T (a list of them for a list of times).",
+        "", "clohessy_wiltshire(0.00108, [0.1, 0, 0], [0, 0, 0], t = 600)", 4, 4,
+        [](const builtin& b, const args_t& a, context&) -> value {
+            const double n = to_double(arg_ex(a, 0, b), b, "n");
+            if (!(n > 0)) throw type_error(b.name + ": the mean motion n must be positive");
+            const mechanics::relative_state s{number_vector(a, 1, b, "rho0"), number_vector(a, 2, b, "rho0'")};
+            bool several = false;
+            std::vector<mechanics::relative_state> out;
+            for (const double t : times_arg(a, 3, b, several)) out.push_back(mechanics::clohessy_wiltshire(n, s, t));
+            return relative_states(out, several);
+        });
+    add(r, "tschauner_hempel", "tschauner_hempel(mu, R0, V0, rho0, rho0', t = T)",
+        "The linear model of the relative motion about an elliptic target orbit (Tschauner-Hempel): the LVLH "
+        "equation linearized in rho, rho'' + 2 w x rho' + w' x rho + w x (w x rho) + (mu/|R|^3)(rho - 3 (rho . x) x) "
+        "= 0, integrated with the target's orbit (Boost.Odeint rkf78 at 1e-13). Arguments and result as for "
+        "relative_motion.",
+        "", "tschauner_hempel(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
+        [](const builtin& b, const args_t& a, context&) -> value {
+            const double mu = to_double(arg_ex(a, 0, b), b, "mu");
+            if (!(mu > 0)) throw type_error(b.name + ": mu must be positive");
+            const Eigen::Vector3d R0 = number_vector(a, 1, b, "R0"), V0 = number_vector(a, 2, b, "V0");
+            const mechanics::relative_state s{number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")};
+            bool several = false;
+            std::vector<double> times = times_arg(a, 5, b, several);
+            std::vector<std::size_t> order(times.size());
+            for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+            std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
+            std::vector<double> sorted;
+            for (const std::size_t k : order) sorted.push_back(times[k]);
+            const auto states = mechanics::tschauner_hempel(mu, R0, V0, s, sorted);
+            std::vector<mechanics::relative_state> out(times.size());
+            for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
+            return relative_states(out, several);
         });
 }
 
