@@ -36,14 +36,25 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         F.s = d->first;
         F.u = d->second;
         const ex w = F.s * F.u;
-        // a(t) = |u| int_0^t s
-        F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, P.t).antiderivative().to_ex();
+        // a(t) = |u| int_0^t s: in closed form for a quasi-polynomial s, else the integral
+        // object (VI.2.12 holds for any signed rate; eval and verify by quadrature)
+        bool elementary = true;
+        try {
+            F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, P.t).antiderivative().to_ex();
+        } catch (const domain_error&) {
+            elementary = false;
+            const ex& tau = integration_variable();
+            F.angle = norm(F.u) * GiNaC::integral(tau, 0, P.t, F.s.subs(P.t == tau));
+        }
         F.m = T->m;
         F.k = T->g;
         // F along u passes Q^T unchanged; across u it is rotated (solve_fixed_axis)
         F.free = T->free;
         F.across = 0;
         if (!T->free.is_zero() && !equal(cross(F.u, T->free), 0)) {
+            // across the axis with an angle that is itself an integral: Duhamel's integrand would
+            // hold an integral (not evaluated here); the VI.3 reading refuses it with the reason
+            if (!elementary) return std::nullopt;
             F.free = dot(F.u, T->free) / dot(F.u, F.u) * F.u;
             F.across = T->free - F.free;
         }
