@@ -10,6 +10,7 @@
 
 #include "scalar/scalar.h"
 #include "lang/builtins.h"
+#include "vector/vector.h"
 #include "numeric/reference.h"
 #include "lang/interpreter.h"
 #include "output/printer.h"
@@ -267,7 +268,14 @@ void register_core_builtins(registry& r) {
             }
             return map_value(a[0], b, [&](const ex& e) {
                 guard_terms(expression_nodes(e) * double(n), b.name.c_str());
-                return e.diff(x, static_cast<unsigned>(n));
+                // a vector declared as a function of x (vector r(t)) differentiates to r'
+                // (diff_t); GiNaC's own diff holds every vector constant
+                bool timed = false;
+                for (const ex& v : vector_symbols(e)) timed = timed || !diff_t(v, x).is_zero();
+                if (!timed) return e.diff(x, static_cast<unsigned>(n));
+                ex d = e;
+                for (long k = 0; k < n; ++k) d = diff_t(d, x);
+                return d;
             });
         });
     add(r, "series", "series(e, x = a, n)",

@@ -24,6 +24,8 @@
 #include "mechanics/fixed_axis.h"
 #include "mechanics/relative_motion.h"
 #include "mechanics/turning_frame.h"
+#include "mechanics/reduced_solution.h"
+#include "mechanics/quasi_polynomial.h"
 #include "numeric/verify.h"
 #include "numeric/quadrature.h"
 #include "vector/vector.h"
@@ -285,6 +287,53 @@ void register_mechanics_builtins(registry& r) {
             const element E = R.exp_minus_Kt(t);
             auto c = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
             return value(c(0) * x + c(1) * cross(w, x) + c(2) * cross(w, cross(w, x)));
+        });
+    add(r, "F", "F(w, x)",
+        "The rotation operator F_w(x) = R x of the thesis, R' = W R, R(0) = I (W y = w x y): the solution of "
+        "y' = w x y with y(0) = x, so that F(-w, psi) is Q psi of the reduction r = F_(-w)(psi). In closed form "
+        "for a constant w (Rodrigues), a fixed direction w = s(t) u (angle a(t) = |u| int_0^t s, an integral "
+        "object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution "
+        "by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed.",
+        "(VI.2.9-12), (VI.3.118-119)", "vector u, x\nF((1 + sin(t))*u, x)", 2, 2,
+        [](const builtin& b, const args_t& a, context& c) -> value {
+            const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
+            if (w.is_zero() || x.is_zero()) return value(x);
+            if (!mechanics::depends_on_time(w, t)) {  // (VI.1.13-15) constant w: exp(K t) x, K = w x
+                const GiNaC::possymbol W("|w|");
+                const mechanics::rotation_operator_algebra R(W);
+                const element E = R.exp_minus_Kt(t);
+                auto co = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
+                const ex y = co(0) * x - co(1) * cross(w, x) + co(2) * cross(w, cross(w, x));
+                return value(vector_symbols(y).empty() ? subs_components(y, {}) : y);
+            }
+            if (const auto d = mechanics::fixed_direction(w, t)) {  // (VI.2.12) w = s(t) u
+                const ex& u = d->second;
+                const ex U = norm(u);
+                ex a_t;
+                try {
+                    a_t = U * mechanics::quasi_polynomial::from_ex(d->first, t).antiderivative().to_ex();
+                } catch (const std::exception&) {  // int_0^t s not elementary: an integral object
+                    const ex& tau = mechanics::integration_variable();
+                    a_t = U * GiNaC::integral(tau, 0, t, d->first.subs(t == tau));
+                }
+                const ex y = GiNaC::cos(a_t) * x + GiNaC::sin(a_t) / U * cross(u, x) +
+                             (1 - GiNaC::cos(a_t)) / (U * U) * dot(u, x) * u;
+                return value(vector_symbols(y).empty() ? subs_components(y, {}) : y);  // literals: one literal
+            }
+            // F_w = F_(-v) with v = -w: the Q of v (turning_frame.h)
+            mechanics::turning_frame_form F;
+            F.terms.w = -w;
+            F.precessing = mechanics::regular_precession(-w, t);
+            if (F.precessing) {
+                const ex y = *mechanics::closed_rotation(F, x, t);
+                return value(vector_symbols(y).empty() ? subs_components(y, {}) : y);
+            }
+            if (mechanics::depends_on_time(x, t))
+                throw domain_error(b.name + ": w(t) = " + print_ex(w) + " turns, so R has no closed form, and x = " +
+                                   print_ex(x) + " depends on t: F_w(x) is evaluated for a constant x only "
+                                   "(F(w, x0), then eval)");
+            return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+                mechanics::reduced_solution{mechanics::rotation_problem(w, x, t), {}, true})});
         });
     add(r, "vector_series", "vector_series(e, w, n)",
         "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "

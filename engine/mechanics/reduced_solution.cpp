@@ -66,7 +66,13 @@ std::function<double(double)> scalar_of(const ex& e, const ex& x) {
 }  // namespace
 
 std::string reduced_solution::to_string() const {
-    std::string s = describe_reduction(*problem, form());
+    std::string s;
+    if (rotation_operator)  // (VI.3.118-119) y = F_w(x0) = R x0 with w = -(the problem's w)
+        s = "F_w(" + symrep::to_string(problem->initial[0]) + ") = R " + symrep::to_string(problem->initial[0]) +
+            ", R' = W R, R(0) = I, W x = w x x, w(t) = " + symrep::to_string(-form().terms.w) +
+            "   (VI.3.118-119; numeric: Magnus on SO(3))";
+    else
+        s = describe_reduction(*problem, form());
     std::vector<std::string> given;
     for (const auto& [k, v] : values.vectors) given.push_back(symrep::to_string(k) + " = " + symrep::to_string(v));
     for (const auto& [k, v] : values.scalars) given.push_back(symrep::to_string(k) + " = " + symrep::to_string(v));

@@ -24,6 +24,8 @@ namespace symrep::mechanics {
 struct reduced_solution {
     std::shared_ptr<const cauchy_problem> problem;  ///< with problem->turning set
     parameter_values values;                        ///< bound by solve(P, values); may be empty
+    /// The rotation operator F_w(x0) itself (rotation_problem(), turning_frame.h): printed as such.
+    bool rotation_operator = false;
 
     const turning_frame_form& form() const { return *problem->turning; }
     /// The derivation, as describe_reduction() (with the bound values listed).

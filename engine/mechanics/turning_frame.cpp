@@ -12,17 +12,18 @@ namespace symrep::mechanics {
 
 using GiNaC::ex;
 
-namespace {
-
-using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
-
-// e depends on t: t in it, or a vector declared as a function of t (vector w(t))
-bool depends_on(const ex& e, const ex& t) {
+bool depends_on_time(const ex& e, const ex& t) {
     if (e.has(t)) return true;
     for (const ex& v : vector_symbols(e))
         if (!diff_t(v, t).is_zero()) return true;
     return false;
 }
+
+namespace {
+
+using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
+
+bool depends_on(const ex& e, const ex& t) { return depends_on_time(e, t); }
 
 bool has_unknown(const cauchy_problem& P, const ex& e);
 
@@ -360,6 +361,24 @@ std::vector<ex> first_integrals(const cauchy_problem& P, const turning_frame_for
     if (F.u) out.push_back(dot(*F.u, L));
     out.push_back(dot(L, L));
     return out;
+}
+
+std::shared_ptr<const cauchy_problem> rotation_problem(const ex& w, const ex& x0, const ex& t) {
+    // (VI.3.118-119) y = F_w(x0): y' = w x y, i.e. y' + v x y = 0 with v = -w, y(0) = x0
+    auto P = std::make_shared<cauchy_problem>();
+    P->name = "y";
+    P->t = t;
+    P->is_vector = true;
+    const ex y = GiNaC::realsymbol("y");
+    register_vector_function(y, t);
+    P->unknowns = {y, derivative(y)};
+    P->initial = {x0};
+    P->expression = P->unknowns[1] - cross(w, y);
+    std::string why;
+    auto F = read_turning_frame(*P, &why);
+    if (!F) throw domain_error("F_w(x): " + (why.empty() ? std::string("w(t) = " + to_string(w) + " is not read") : why));
+    P->turning = std::make_shared<const turning_frame_form>(std::move(*F));
+    return P;
 }
 
 }  // namespace symrep::mechanics

@@ -25,6 +25,7 @@
 // first by fixed_axis.h, which gives a closed form; this header takes the rest.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -56,6 +57,9 @@ std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string
 /// w = s(t) u with u constant (a literal [0, 0, f(t)] read as f(t) [0, 0, 1]): (s, u); nothing
 /// when the direction of w turns.
 std::optional<std::pair<GiNaC::ex, GiNaC::ex>> fixed_direction(const GiNaC::ex& w, const GiNaC::ex& t);
+
+/// e depends on t: t occurs in it, or a vector declared as a function of t (vector w(t)).
+bool depends_on_time(const GiNaC::ex& e, const GiNaC::ex& t);
 
 /// The reading of a problem solved by Thm VI.3.2.1.
 struct turning_frame_form {
@@ -103,5 +107,11 @@ std::string describe_reduction(const cauchy_problem& P, const turning_frame_form
 /// (when V is elementary), |r x p|^2 (psi x psi' = Q^T (r x p) is constant), and for a
 /// fixed direction u also u . (r x p). domain_error for a first-order problem.
 std::vector<GiNaC::ex> first_integrals(const cauchy_problem& P, const turning_frame_form& F);
+
+/// (VI.3.118-119) The problem y' = w x y, y(0) = x0, read (turning set), whose solution
+/// is y = F_w(x0) = R x0 with R' = W R, R(0) = I: the rotation operator with angular
+/// velocity w as a solution by reduction (reduced_solution.h) when R has no closed form.
+/// domain_error when w is not read as an angular velocity (a w depending on y, say).
+std::shared_ptr<const cauchy_problem> rotation_problem(const GiNaC::ex& w, const GiNaC::ex& x0, const GiNaC::ex& t);
 
 }  // namespace symrep::mechanics
