@@ -229,4 +229,23 @@ void RelativeMotion_EccentricAgainstLinear(benchmark::State& state) {
 }
 BENCHMARK(RelativeMotion_EccentricAgainstLinear)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {1, 10}})->Unit(benchmark::kMillisecond);
 
+// The same linear model in closed form (Yamanaka-Ankersen, mechanics::yamanaka_ankersen): its
+// cost per point and its difference from the integrated Tschauner-Hempel model (the same
+// equation: rounding plus odeint's 1e-13), e ~ 0.3 as above. range(0) = orbits.
+void RelativeMotion_YamanakaAnkersen(benchmark::State& state) {
+    const double mu = 398600.4418;
+    const Vector3d R0(7000.0, 0, 0), V0(0, 8.5, 1.2);
+    const double a = 1 / (2 / R0.norm() - V0.squaredNorm() / mu), n = std::sqrt(mu / (a * a * a));
+    const double t = double(state.range(0)) * 2 * std::numbers::pi / n;
+    const mechanics::relative_state s{Vector3d(0.3, -0.8, 0.5).normalized(), 1e-4 * Vector3d(0.2, 0.1, -0.3)};
+    mechanics::relative_state ya;
+    for (auto _ : state) {
+        ya = mechanics::yamanaka_ankersen(mu, R0, V0, s, {t})[0];
+        benchmark::DoNotOptimize(std::as_const(ya));
+    }
+    const mechanics::relative_state th = mechanics::tschauner_hempel(mu, R0, V0, s, {t})[0];
+    state.counters["ya_vs_th"] = (ya.position - th.position).norm() / th.position.norm();
+}
+BENCHMARK(RelativeMotion_YamanakaAnkersen)->Arg(1)->Arg(10)->Arg(100)->Unit(benchmark::kMicrosecond);
+
 }  // namespace

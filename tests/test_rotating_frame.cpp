@@ -409,4 +409,36 @@ TEST(RelativeMotion, TschaunerHempelIsTheFirstOrderLimitForAnEccentricTarget) {
     }
 }
 
+// Yamanaka-Ankersen (the closed form of the same linear model, derived in relative_motion.h)
+// against Tschauner-Hempel integrated with the target's orbit (odeint at 1e-13): circular,
+// e ~ 0.3 and 0.75 and a hyperbolic flyby, starting at periapsis or elsewhere on the orbit,
+// at several times up to 3 orbits. Measured 6e-14 .. 3e-12 relative (the integration's error
+// growing with time); bound 1e-10. A wrong sign in one
+// basis function or in the tilde transform gives O(1). For e = 0 it is Clohessy-Wiltshire
+// to rounding (1e-13: J = n t, s = sin, c = cos).
+TEST(RelativeMotion, YamanakaAnkersenIsTheClosedFormOfTschaunerHempel) {
+    const relative_state s{Vector3d(0.3, -0.8, 0.5), Vector3d(2e-4, 1e-4, -3e-4)};
+    const std::vector<std::pair<Vector3d, Vector3d>> targets = {
+        {Vector3d(7000.0, 0.0, 0.0), Vector3d(0.0, 8.5, 1.2)},          // e ~ 0.3, at periapsis
+        {Vector3d(5000.0, 4000.0, 500.0), Vector3d(-6.0, 6.5, 2.0)},    // elsewhere on the orbit
+        {Vector3d(7000.0, 0.0, 0.0), Vector3d(0.0, 9.9, 0.0)},          // e ~ 0.75
+        {Vector3d(7000.0, 0.0, 0.0), Vector3d(0.0, 12.0, 0.5)},         // hyperbolic
+    };
+    for (const auto& [R0, V0] : targets) {
+        const std::vector<double> times = {0.0, 900.0, 4000.0, 11000.0, 20000.0};
+        const auto ya = yamanaka_ankersen(mu, R0, V0, s, times);
+        const auto th = tschauner_hempel(mu, R0, V0, s, times);
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            EXPECT_LT((ya[i].position - th[i].position).norm(), 1e-10 * th[i].position.norm()) << times[i] << " " << V0.y();
+            EXPECT_LT((ya[i].velocity - th[i].velocity).norm(), 1e-10 * th[i].velocity.norm()) << times[i] << " " << V0.y();
+        }
+    }
+    const double r = 7000.0, n = std::sqrt(mu / (r * r * r));
+    const auto ya = yamanaka_ankersen(mu, Vector3d(0, r, 0), Vector3d(-n * r, 0, 0), s, {5000.0})[0];
+    const relative_state cw = clohessy_wiltshire(n, s, 5000.0);
+    EXPECT_LT((ya.position - cw.position).norm(), 1e-13 * cw.position.norm());
+    EXPECT_LT((ya.velocity - cw.velocity).norm(), 1e-12 * cw.velocity.norm());
+    EXPECT_THROW(yamanaka_ankersen(mu, Vector3d(r, 0, 0), Vector3d(1, 0, 0), s, {1.0}), symrep::domain_error);
+}
+
 }  // namespace relative

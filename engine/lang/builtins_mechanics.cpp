@@ -648,6 +648,21 @@ void register_mechanics_builtins(registry& r) {
             for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
             return relative_states(out, several);
         });
+    add(r, "yamanaka_ankersen", "yamanaka_ankersen(mu, R0, V0, rho0, rho0', t = T)",
+        "The same linear model as tschauner_hempel in closed form (Yamanaka-Ankersen), derived from the "
+        "Tschauner-Hempel equations in the true anomaly: x~ = rho x, solutions rho sin, rho cos, 2 - 3 e s J with "
+        "J = k^2 t (mechanics/relative_motion.h); any eccentricity, no integration. Arguments and result as for "
+        "relative_motion.",
+        "", "yamanaka_ankersen(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
+        [](const builtin& b, const args_t& a, context&) -> value {
+            const double mu = to_double(arg_ex(a, 0, b), b, "mu");
+            if (!(mu > 0)) throw type_error(b.name + ": mu must be positive");
+            const Eigen::Vector3d R0 = number_vector(a, 1, b, "R0"), V0 = number_vector(a, 2, b, "V0");
+            const mechanics::relative_state s{number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")};
+            bool several = false;
+            const std::vector<double> times = times_arg(a, 5, b, several);
+            return relative_states(mechanics::yamanaka_ankersen(mu, R0, V0, s, times), several);
+        });
 }
 
 }  // namespace symrep::lang

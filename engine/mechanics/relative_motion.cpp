@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <Eigen/LU>
+
 #include "core/error.h"
 #include "numeric/integrate.h"
 #include "numeric/kepler.h"
@@ -86,6 +88,70 @@ std::vector<relative_state> tschauner_hempel(double mu, const Eigen::Vector3d& R
     for (std::size_t k = 0; k < times.size(); ++k) {
         const Eigen::VectorXd y = res.states.row(Eigen::Index(k));
         out.push_back({y.segment<3>(6), y.segment<3>(9)});
+    }
+    return out;
+}
+
+namespace {
+
+// The in-plane fundamental matrix of the Tschauner-Hempel equations in the true anomaly
+// (see yamanaka_ankersen in relative_motion.h): columns the four solutions, rows x~, y~,
+// x~', y~' at cos(theta) = ct, sin(theta) = st and J = k^2 (t - t0).
+Eigen::Matrix4d in_plane_basis(double e, double ct, double st, double J) {
+    const double rho = 1 + e * ct, s = rho * st, c = rho * ct;
+    const double ds = ct + e * (ct * ct - st * st), dc = -st - 2 * e * st * ct;
+    const double X3 = 2 - 3 * e * s * J, dX3 = -3 * e * (ds * J + s / (rho * rho));
+    Eigen::Matrix4d M;
+    M << s, c, X3, 0,                                        // x~
+        c * (1 + 1 / rho), -s * (1 + 1 / rho), -3 * rho * rho * J, 1,  // y~
+        ds, dc, dX3, 0,                                      // x~'
+        -2 * s, -2 * c + e, -2 * X3 + 1, 0;                  // y~' = -2 x~ + const
+    return M;
+}
+
+}  // namespace
+
+std::vector<relative_state> yamanaka_ankersen(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
+                                              const relative_state& start, const std::vector<double>& times) {
+    lvlh_axes(R0, V0);  // refuses a radial target orbit
+    if (!(mu > 0) || !std::isfinite(mu)) throw domain_error("yamanaka_ankersen: mu must be positive");
+    const Eigen::Vector3d H = R0.cross(V0);
+    const double h = H.norm(), p = h * h / mu, k2 = h / (p * p);
+    const Eigen::Vector3d ev = V0.cross(H) / mu - R0.normalized();
+    const double e = ev.norm();
+    // the perifocal directions, fixed along a Kepler orbit; for e = 0 any origin of theta serves
+    const Eigen::Vector3d P = e > 0 ? Eigen::Vector3d(ev / e) : Eigen::Vector3d(R0.normalized());
+    const Eigen::Vector3d Qd = H.normalized().cross(P);
+    auto anomaly = [&](const Eigen::Vector3d& R, double& ct, double& st) {
+        const Eigen::Vector3d u = R.normalized();
+        ct = u.dot(P), st = u.dot(Qd);
+    };
+    // x~ = rho x, x~' = -e sin(theta) x + x'/(k^2 rho) (' in theta on the left, in t on the right)
+    double c0, s0;
+    anomaly(R0, c0, s0);
+    const double rho0 = 1 + e * c0;
+    const Eigen::Vector3d& q = start.position;
+    const Eigen::Vector3d& v = start.velocity;
+    auto tilde_rate = [&](double x, double xd) { return -e * s0 * x + xd / (k2 * rho0); };
+    const Eigen::Vector4d plane0(rho0 * q.x(), rho0 * q.y(), tilde_rate(q.x(), v.x()), tilde_rate(q.y(), v.y()));
+    const Eigen::Vector4d d = in_plane_basis(e, c0, s0, 0).partialPivLu().solve(plane0);
+    // out of the plane: z~ = d5 sin(theta) + d6 cos(theta)
+    const double z0 = rho0 * q.z(), dz0 = tilde_rate(q.z(), v.z());
+    const double d5 = z0 * s0 + dz0 * c0, d6 = z0 * c0 - dz0 * s0;
+    std::vector<relative_state> out;
+    out.reserve(times.size());
+    for (const double t : times) {
+        if (!(t >= 0) || !std::isfinite(t)) throw domain_error("yamanaka_ankersen: the times must be finite and >= 0");
+        const num::kepler_state target = num::kepler_propagate(mu, R0, V0, t);
+        double ct, st;
+        anomaly(target.position, ct, st);
+        const double rho = 1 + e * ct;
+        const Eigen::Vector4d x = in_plane_basis(e, ct, st, k2 * t) * d;
+        const double z = d5 * st + d6 * ct, dz = d5 * ct - d6 * st;
+        // back: x = x~/rho, x' = k^2 (rho x~' + e sin(theta) x~)
+        auto rate = [&](double xt, double dxt) { return k2 * (rho * dxt + e * st * xt); };
+        out.push_back({Eigen::Vector3d(x[0] / rho, x[1] / rho, z / rho),
+                       Eigen::Vector3d(rate(x[0], x[2]), rate(x[1], x[3]), rate(z, dz))});
     }
     return out;
 }

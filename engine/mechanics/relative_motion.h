@@ -56,4 +56,20 @@ std::vector<relative_state> tschauner_hempel(double mu, const Eigen::Vector3d& R
                                              const relative_state& start, const std::vector<double>& times,
                                              double rel_tol = 1e-13);
 
+/// The same linear model in closed form (Yamanaka-Ankersen), derived here from the
+/// Tschauner-Hempel equations in the true anomaly theta with x~ = rho x, rho = 1 + e cos(theta),
+/// ' = d/dtheta (x radial, y along track, z normal):
+///     x~'' = 3 x~/rho + 2 y~',   y~'' = -2 x~',   z~'' = -z~.
+/// y~' = -2 x~ + C turns the first into L[x~] = x~'' + (4 - 3/rho) x~ = 2 C, whose solutions are
+/// s = rho sin(theta) (L[s] = 0), c = rho cos(theta) (L[c] = 2 e) and 2 - 3 e s J (L = 2), with
+/// J = int_theta0^theta dtheta/rho^2 = k^2 (t - t0), k^2 = h/p^2 (theta' = k^2 rho^2 in t); then
+///     x~ = d1 s + d2 c + d3 (2 - 3 e s J),
+///     y~ = d1 c (1 + 1/rho) - d2 s (1 + 1/rho) - 3 d3 rho^2 J + d4,   z~ = d5 sin + d6 cos,
+/// no secular theta left (J carries the drift), so only cos and sin of theta are needed: from
+/// the target's position (numeric/kepler.h) against the perifocal axes fixed at t = 0. The
+/// constants d come from the state at t = 0 (a 4x4 solve, the pseudo-initial values of
+/// Yamanaka and Ankersen). Any eccentricity (circular: Clohessy-Wiltshire; hyperbolic too).
+std::vector<relative_state> yamanaka_ankersen(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
+                                              const relative_state& start, const std::vector<double>& times);
+
 }  // namespace symrep::mechanics
