@@ -359,7 +359,9 @@ void register_mechanics_builtins(registry& r) {
         "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. Also the rotating-frame "
         "form m (r'' + 2 w x r' + w' x r + w x (w x r)) + g(|r|) r + F(t) = 0 with w(t) of fixed direction "
         "(closed form; F across the axis by integral objects) or turning, and a central field g(|r|) r "
-        "(k r/|r|^3: Kepler) without F (the reduction of Thm VI.3.2.1). The problem is checked when it is made.",
+        "(k r/|r|^3: Kepler) without F (the reduction of Thm VI.3.2.1). A second-order problem without r itself "
+        "(m r'' = q (r' x B(t) + E)) is solved for v = r' and r = r(0) + int_0^t v (VI.2.50-52). The problem is "
+        "checked when it is made.",
         "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)",
         "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
         [](const builtin& b, const args_t&, context&) -> value {

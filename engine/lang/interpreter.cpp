@@ -545,8 +545,28 @@ value session::ode_form(const node& n) {
             if (!dynamic_cast<const domain_error*>(&e) && !dynamic_cast<const type_error*>(&e)) throw;
             why3 = e.what();
         }
+        std::shared_ptr<mechanics::cauchy_problem> V;
+        if (!fa && !tf && P.is_vector && M == 2 && !P.expression.has(P.unknowns[0])) {
+            // (VI.2.50-52) x itself absent: the first-order problem for v = x' (a charge in B(t)),
+            // then x = x(0) + int_0^t v
+            V = std::make_shared<mechanics::cauchy_problem>(P);
+            V->name = P.name + "'";
+            V->unknowns = {P.unknowns[1], P.unknowns[2]};
+            V->initial = {P.initial[1]};
+            std::string whyv;
+            try {
+                if (auto fv = mechanics::read_fixed_axis(*V, &whyv))
+                    V->fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fv));
+                else if (auto tv = mechanics::read_turning_frame(*V, &whyv))
+                    V->turning = std::make_shared<const mechanics::turning_frame_form>(std::move(*tv));
+            } catch (const error& e) {
+                if (!dynamic_cast<const domain_error*>(&e) && !dynamic_cast<const type_error*>(&e)) throw;
+            }
+            if (!V->fixed_axis && !V->turning) V.reset();
+        }
         if (fa) P.fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fa));
         else if (tf) P.turning = std::make_shared<const mechanics::turning_frame_form>(std::move(*tf));
+        else if (V) P.velocity = V;
         else if (!why.empty()) throw domain_error(why);  // a fixed axis, in another form: its reason
         else if (!why3.empty()) throw domain_error(why3);
         else throw;

@@ -486,6 +486,15 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 }
 
 ex solve(const cauchy_problem& P) {
+    if (!P.reduced && P.velocity) {  // (VI.2.51) x = x(0) + int_0^t x'
+        const ex v = solve(*P.velocity);
+        try {
+            return P.initial[0] + integral_in_t(v, P.t);
+        } catch (const domain_error& e) {
+            throw closed_form_error("the position " + P.name + " = " + P.name + "(0) + int_0^t " + P.velocity->name +
+                                    " of the velocity " + P.velocity->name + " = " + to_string(v) + ": " + e.what());
+        }
+    }
     if (!P.reduced && P.fixed_axis) return solve_fixed_axis(P, *P.fixed_axis);
     if (!P.reduced && P.turning)
         if (const auto x = closed_solution(P, *P.turning)) return *x;

@@ -53,6 +53,10 @@ struct cauchy_problem {
     /// A rotating-frame problem with a turning w(t) or a central field (turning_frame.h, VI.3):
     /// its reading; solve() refuses it (Q or psi has no closed form), reduced_solution evaluates it.
     std::shared_ptr<const turning_frame_form> turning;
+    /// A second-order problem in which x itself does not appear (only x', x''), whose
+    /// first-order problem for v = x' is a rotating-frame one (a charge in B(t), VI.2.50):
+    /// that problem (unknowns x', x''); solve() gives x = x(0) + int_0^t v (VI.2.51-52).
+    std::shared_ptr<const cauchy_problem> velocity;
 
     /// M, the order.
     std::size_t order() const { return unknowns.size() - 1; }

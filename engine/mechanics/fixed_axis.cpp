@@ -2,6 +2,8 @@
 // problem to the inertial one (fixed_axis.h; thesis VI.2).
 #include "mechanics/fixed_axis.h"
 
+#include "numeric/quadrature.h"
+
 #include <algorithm>
 #include <map>
 
@@ -195,6 +197,61 @@ std::vector<ex> first_integrals(const cauchy_problem& P, const fixed_axis_form& 
     const ex p = r1 + cross(F.s * F.u, r);
     const ex L = cross(r, p);
     return {F.m * dot(p, p) / 2 + F.k * dot(r, r) / 2, dot(F.u, L), dot(L, L)};
+}
+
+ex integral_in_t(const ex& v, const ex& t) {
+    const ex& tau = integration_variable();
+    static const ex sigma = GiNaC::realsymbol("sigma");
+    // the terms of c with an elementary integral one by one, the rest as one integral object
+    auto scalar = [&](const ex& c0) -> ex {
+        const ex c = GiNaC::expand(c0);
+        if (c.is_zero()) return 0;
+        ex done = 0, rest = 0;
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(c) ? c.nops() : 1); ++i) {
+            const ex term = GiNaC::is_a<GiNaC::add>(c) ? c.op(i) : c;
+            if (!term.has(t)) {
+                done += term * t;
+                continue;
+            }
+            try {
+                done += quasi_polynomial::from_ex(term, t).antiderivative().to_ex();
+                continue;
+            } catch (const domain_error&) {
+            }
+            // an integral object inside (int_0^t g(tau) dtau, from the velocity): its variable
+            // becomes sigma, so that the outer integral's tau only moves its upper limit
+            GiNaC::exmap inner;
+            for (auto it = term.preorder_begin(); it != term.preorder_end(); ++it)
+                if (GiNaC::is_a<GiNaC::integral>(*it)) {
+                    if (!it->op(0).is_equal(tau) || !it->op(2).is_equal(t) || num::has_integral(it->op(3)))
+                        throw domain_error("int_0^t of " + to_string(term) +
+                                           ": it holds an integral object that is not int_0^t g(tau) dtau");
+                    inner[*it] = GiNaC::integral(sigma, it->op(1), t, it->op(3).subs(tau == sigma));
+                }
+            rest += inner.empty() ? term : term.subs(inner, GiNaC::subs_options::no_pattern);
+        }
+        if (rest.is_zero()) return done;
+        // a common factor free of t stays outside: (v0 . u) int_0^t cos(a) dtau
+        const ex r = GiNaC::factor(rest.subs(t == tau));
+        ex outside = 1, inside = r;
+        if (GiNaC::is_a<GiNaC::mul>(r)) {
+            inside = 1;
+            for (std::size_t i = 0; i < r.nops(); ++i) (r.op(i).has(tau) ? inside : outside) *= r.op(i);
+        }
+        return done + outside * GiNaC::integral(tau, 0, t, inside);
+    };
+    ex out = 0;
+    for (const vector_term& term : canonical_terms(v)) {
+        if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
+            const ex& M = term.monomial;
+            out += vector_literal(scalar(GiNaC::expand(term.coefficient * M.op(0))),
+                                  scalar(GiNaC::expand(term.coefficient * M.op(1))),
+                                  scalar(GiNaC::expand(term.coefficient * M.op(2))));
+        } else {
+            out += scalar(term.coefficient) * term.monomial;
+        }
+    }
+    return out;
 }
 
 }  // namespace symrep::mechanics

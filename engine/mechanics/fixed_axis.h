@@ -62,6 +62,13 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
 /// The variable tau of the integral objects int_0^t ... dtau in solutions.
 const GiNaC::ex& integration_variable();
 
+/// int_0^t v(tau) dtau of a vector (or scalar) expression v, term by term over its canonical
+/// terms c(t) V: elementary when c is a quasi-polynomial, otherwise the integral object
+/// int_0^t c dtau; a c that holds integral objects int_0^t g(tau) dtau gives the nested
+/// int_0^t c(tau) (int_0^tau g(sigma) dsigma) dtau (numeric/quadrature.h evaluates it).
+/// domain_error for deeper nesting.
+GiNaC::ex integral_in_t(const GiNaC::ex& v, const GiNaC::ex& t);
+
 /// r(t) = Q psi(t), coordinate-free. Errors as solve(cauchy_problem).
 GiNaC::ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F);
 

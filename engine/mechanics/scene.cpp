@@ -404,7 +404,7 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
     if (!P.reduced && P.turning && !closed_turning)
         throw closed_form_error("the solution " + describe_reduction(P, *P.turning) +
                                 "\nhas no closed form in t (reduced_solution.h evaluates it)");
-    if (!P.reduced && (P.fixed_axis || closed_turning)) {
+    if (!P.reduced && (P.fixed_axis || closed_turning || P.velocity)) {
         // a frame rotating about a fixed axis (VI.2) or precessing regularly (VI.3): the general reduction with the values
         // put in (floats as the exact numbers they are, the result evaluated once at the end)
         check_value_names(P, v);
@@ -419,7 +419,7 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
             floats = floats || has_float(x);
             x = num::exact_floats_of(x);
         }
-        out.model_solution = closed_turning ? *closed_turning : solve_fixed_axis(P, *P.fixed_axis);
+        out.model_solution = closed_turning ? *closed_turning : P.velocity ? solve(P) : solve_fixed_axis(P, *P.fixed_axis);
         out.x = put_values(out.model_solution, exact);
         if (floats) out.x = normalize_trig_signs(GiNaC::evalf(out.x));
         // integral objects (a free term across the axis) keep the nesting of the general form:
@@ -428,6 +428,12 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
         if (closed_turning) {
             out.model.reduction = "method: reduction to the inertial problem (Thm VI.3.2.1): r = Q psi, Q = A B a "
                                   "regular precession, both in closed form\n";
+            return out;
+        }
+        if (P.velocity) {
+            out.model.reduction = "method: the velocity " + P.velocity->name + " by reduction to the inertial problem "
+                                  "(Thm VI.2.1.1), then " + P.name + " = " + P.name + "(0) + int_0^t " +
+                                  P.velocity->name + " (VI.2.51)\n";
             return out;
         }
         const fixed_axis_form& fa = *P.fixed_axis;

@@ -25,8 +25,16 @@ bool has_integral(const GiNaC::ex& e);
 /// or the quadrature does not converge (the estimate is said).
 double integrate_numerically(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
 
+/// int_a^b f(x) dx where f holds integral objects int_c^x g(s) ds (c a number, g in its own
+/// variable s alone): the nested integrals of a position integrated from a velocity that holds
+/// integral objects (VI.2.51 with VI.2.62). The inner integrals and the outer one are solved
+/// together as the first-order system y_j' = g_j(x), z' = f(x, y) from x = a (Boost.Odeint rkf78
+/// at 1e-13 relative: about 1e-13, not the last digit of the single quadratures).
+/// domain_error for another form of nesting or a symbol left.
+double integrate_nested(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
+
 /// e with every integral object whose limits are numbers and whose integrand has
-/// no symbol but its variable replaced by its value (innermost first).
+/// no symbol but its variable (or nested integrals, integrate_nested) replaced by its value.
 GiNaC::ex integrals_as_numbers(const GiNaC::ex& e);
 
 }  // namespace symrep::num
