@@ -655,9 +655,35 @@ ex atomize_trig_arguments(const ex& e) {
     return sub.empty() ? e : e.subs(sub, GiNaC::subs_options::no_pattern);
 }
 
+// The bound variables of the integral objects renamed by nesting depth (tau_0 for an integral
+// without one inside, tau_1 around those, ...): int_0^t g(tau) dtau and int_0^t g(sigma) dsigma,
+// which meet in a residual when a nested integral is differentiated, become one object.
+int integral_depth(const ex& e) {
+    int d = -1;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::integral>(*it)) d = std::max(d, 1 + integral_depth(it->op(3)));
+    return d;
+}
+
+ex canonical_bound_variables(const ex& e) {
+    if (!has_integral(e)) return e;
+    if (GiNaC::is_a<GiNaC::integral>(e) && GiNaC::is_a<GiNaC::symbol>(e.op(0))) {
+        static std::vector<ex> names;
+        const ex f = canonical_bound_variables(e.op(3));
+        const std::size_t d = std::size_t(1 + integral_depth(f));
+        while (names.size() <= d) names.push_back(GiNaC::realsymbol("tau_" + std::to_string(names.size())));
+        return GiNaC::integral(names[d], e.op(1), e.op(2), f.subs(e.op(0) == names[d]));
+    }
+    struct recurse : GiNaC::map_function {
+        ex operator()(const ex& c) override { return canonical_bound_variables(c); }
+    } inner;
+    return e.map(inner);
+}
+
 // A vector residual with integral objects: 0 when each component, with fresh symbols for the
 // vectors and the integrals merged, is 0.
-bool integral_residual_zero(const ex& r) {
+bool integral_residual_zero(const ex& r0) {
+    const ex r = canonical_bound_variables(r0);
     // coordinate-free first (fewer symbols: dot products and norms as atoms); the canonical
     // form is not unique with four vectors or more, so a coefficient left is not a proof of
     // anything: then by components

@@ -40,11 +40,9 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         const ex w = F.s * F.u;
         // a(t) = |u| int_0^t s: in closed form for a quasi-polynomial s, else the integral
         // object (VI.2.12 holds for any signed rate; eval and verify by quadrature)
-        bool elementary = true;
         try {
             F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, P.t).antiderivative().to_ex();
         } catch (const domain_error&) {
-            elementary = false;
             const ex& tau = integration_variable();
             F.angle = norm(F.u) * GiNaC::integral(tau, 0, P.t, F.s.subs(P.t == tau));
         }
@@ -54,9 +52,8 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         F.free = T->free;
         F.across = 0;
         if (!T->free.is_zero() && !equal(cross(F.u, T->free), 0)) {
-            // across the axis with an angle that is itself an integral: Duhamel's integrand would
-            // hold an integral (not evaluated here); the VI.3 reading refuses it with the reason
-            if (!elementary) return std::nullopt;
+            // across the axis with an angle that is itself an integral: Duhamel's integrand holds
+            // it, a nested integral (numeric/quadrature.h evaluates it)
             F.free = dot(F.u, T->free) / dot(F.u, F.u) * F.u;
             F.across = T->free - F.free;
         }
@@ -133,6 +130,22 @@ ex separate_argument(const ex& e, const ex& x) {
     return m;
 }
 
+// The integral objects int_0^t g(tau) dtau of c with their variable renamed sigma, so that c(tau)
+// (c.subs(t == tau)) holds int_0^tau g(sigma) dsigma and not a captured tau.
+ex inner_variable(const ex& c, const ex& t) {
+    const ex& tau = integration_variable();
+    static const ex sigma = GiNaC::realsymbol("sigma");
+    GiNaC::exmap inner;
+    for (auto it = c.preorder_begin(); it != c.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::integral>(*it)) {
+            if (!it->op(0).is_equal(tau) || !it->op(2).is_equal(t) || num::has_integral(it->op(3)))
+                throw domain_error("int_0^t of " + to_string(c) +
+                                   ": it holds an integral object that is not int_0^t g(tau) dtau");
+            inner[*it] = GiNaC::integral(sigma, it->op(1), t, it->op(3).subs(tau == sigma));
+        }
+    return inner.empty() ? c : c.subs(inner, GiNaC::subs_options::no_pattern);
+}
+
 // int_0^t G(t - tau) c(tau) dtau: closed form by convolution when c is a quasi-polynomial,
 // else the integral object (its constant factors outside).
 ex duhamel(const ex& G, const ex& c, const ex& t) {
@@ -142,7 +155,7 @@ ex duhamel(const ex& G, const ex& c, const ex& t) {
         // sum_i k_i(t) int_0^t f_i(tau) dtau: what does not depend on tau (t too) outside, the
         // terms grouped by their part in tau (G(t - tau) = sin(w0 t) cos(w0 tau) - ... splits)
         const ex& tau = integration_variable();
-        const ex e = GiNaC::expand(separate_argument(G.subs(t == t - tau), tau) * c.subs(t == tau));
+        const ex e = GiNaC::expand(separate_argument(G.subs(t == t - tau), tau) * inner_variable(c, t).subs(t == tau));
         std::vector<std::pair<ex, ex>> parts;  // f_i(tau), k_i
         for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
             const auto [k, f] = split_constant(GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e, tau);
@@ -201,7 +214,6 @@ std::vector<ex> first_integrals(const cauchy_problem& P, const fixed_axis_form& 
 
 ex integral_in_t(const ex& v, const ex& t) {
     const ex& tau = integration_variable();
-    static const ex sigma = GiNaC::realsymbol("sigma");
     // the terms of c with an elementary integral one by one, the rest as one integral object
     auto scalar = [&](const ex& c0) -> ex {
         const ex c = GiNaC::expand(c0);
@@ -220,15 +232,7 @@ ex integral_in_t(const ex& v, const ex& t) {
             }
             // an integral object inside (int_0^t g(tau) dtau, from the velocity): its variable
             // becomes sigma, so that the outer integral's tau only moves its upper limit
-            GiNaC::exmap inner;
-            for (auto it = term.preorder_begin(); it != term.preorder_end(); ++it)
-                if (GiNaC::is_a<GiNaC::integral>(*it)) {
-                    if (!it->op(0).is_equal(tau) || !it->op(2).is_equal(t) || num::has_integral(it->op(3)))
-                        throw domain_error("int_0^t of " + to_string(term) +
-                                           ": it holds an integral object that is not int_0^t g(tau) dtau");
-                    inner[*it] = GiNaC::integral(sigma, it->op(1), t, it->op(3).subs(tau == sigma));
-                }
-            rest += inner.empty() ? term : term.subs(inner, GiNaC::subs_options::no_pattern);
+            rest += inner_variable(term, t);
         }
         if (rest.is_zero()) return done;
         // a common factor free of t stays outside: (v0 . u) int_0^t cos(a) dtau
