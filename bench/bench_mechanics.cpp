@@ -50,6 +50,33 @@ void BM_Mechanics_Derive(benchmark::State& state) {
 }
 BENCHMARK(BM_Mechanics_Derive)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 
+// Issue 15.1: the Foucault operator with quasi-polynomial forcings of growing degree; the
+// counter `chars` is the length of the printed result.
+const char* const forcings[] = {"g",
+                                "t^3*g",
+                                "t^6*g",
+                                "(1 + t + t^2 + t^3 + t^4 + t^5 + t^6)*g",
+                                "exp(-k*t)*g",
+                                "t*exp(-k*t)*g",
+                                "t^2*exp(-k*t)*g",
+                                "t^3*exp(-k*t)*g",
+                                "t*exp(-t)*cos(2*t)*g"};
+
+void BM_Mechanics_DeriveForced(benchmark::State& state) {
+    std::ostringstream out, err;
+    lang::session s(out, err);
+    s.evaluate("vector w, g, r0, v0; positive w0");
+    const std::string stmt = std::string("solve(ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = ") +
+                             forcings[state.range(0)] + ", r(0) = r0, r'(0) = v0))";
+    lang::value v;
+    for (auto _ : state) benchmark::DoNotOptimize(v = s.evaluate(stmt));
+    std::ostringstream shown;
+    shown << v.as_ex();
+    state.counters["chars"] = double(shown.str().size());
+    state.SetLabel(forcings[state.range(0)]);
+}
+BENCHMARK(BM_Mechanics_DeriveForced)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
+
 // The Foucault solution at Paris, derived by symrep, in components with the
 // parameters put in; one input t.
 struct foucault_at_paris {

@@ -195,10 +195,12 @@ quasi_polynomial forcing_coefficient(const ex& c, const ex& t, const ex& v) {
 // (M1 + M2 q)/D with M1, M2, D free of q (denominators rationalized by the
 // conjugate), each part normalized. The solution of the reduced Foucault problem
 // (VI.2.94) then has w0^2 where 1/(sqrt(w0^2 + |w|^2) - |w|) stood, and its
-// coefficients collapse to the thesis's. c unchanged with no or several roots.
+// coefficients collapse to the thesis's. Normalized (one fraction) without a root; unchanged
+// with several.
 ex in_square_root_field(const ex& c) {
     const square_roots_as_symbols r = with_square_roots_as_symbols(c);
-    if (r.roots.size() != 1 || r.roots[0].first.has(GiNaC::I)) return c;  // none, or several: left as it is
+    if (r.roots.empty()) return one_fraction(c);
+    if (r.roots.size() != 1 || r.roots[0].first.has(GiNaC::I)) return c;  // several: left as it is
     const ex& root = r.roots[0].first;
     const ex& q = r.roots[0].second;
     const ex nd = GiNaC::normal(r.e).numer_denom();
@@ -218,17 +220,29 @@ ex in_square_root_field(const ex& c) {
 // Each coefficient of the functions of t in c (sin, cos, exp of t, powers of t)
 // brought into the field of its square root (in_square_root_field), then summed.
 ex simplified_square_roots(const ex& c, const ex& t) {
-    const ex e = GiNaC::expand(c);
     std::map<ex, ex, GiNaC::ex_is_less> by_t;  // t-part -> its coefficient
-    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
-        const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+    // a term whose factors in t are single functions (t^k, exp, sin, cos) is split as it is;
+    // only one with a sum in t is expanded (its coefficient fractions stay whole)
+    std::function<void(const ex&, bool)> take = [&](const ex& term, bool expanded) {
         ex tp = 1, rest = 1;
         for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
             const ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
-            (f.has(t) ? tp : rest) *= f;
+            if (!f.has(t)) {
+                rest *= f;
+            } else if (!expanded && (GiNaC::is_a<GiNaC::add>(f) || (GiNaC::is_a<GiNaC::power>(f) &&
+                                                                   GiNaC::is_a<GiNaC::add>(f.op(0))))) {
+                const ex e = GiNaC::expand(term);
+                for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i)
+                    take(GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e, true);
+                return;
+            } else {
+                tp *= f;
+            }
         }
         by_t[tp] += rest;
-    }
+    };
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(c) ? c.nops() : 1); ++i)
+        take(GiNaC::is_a<GiNaC::add>(c) ? c.op(i) : c, false);
     ex out = 0;
     for (const auto& [tp, k] : by_t) out += in_square_root_field(k) * tp;
     return out;
@@ -464,11 +478,12 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
     std::map<std::string, ex> data(F.data.begin(), F.data.end());
     const bool omega_symbol = GiNaC::is_a<GiNaC::symbol>(F.Omega);
     const ex norm_w = F.axis.is_zero() ? ex(0) : norm(F.axis);
+    // each coefficient of a function of t once, in the field of its square root (sin(-u t) and
+    // sin(u t) met as one after the signs are fixed)
     auto back = [&](const ex& c) {
-        return positive_trig_arguments(
-            normalize_trig_signs(omega_symbol ? simplified_square_roots(c, P.t).subs(S.abbreviations).subs(F.Omega == norm_w)
-                                              : c.subs(S.abbreviations)),
-            P.t);
+        const ex x = positive_trig_arguments(normalize_trig_signs(c), P.t);
+        return omega_symbol ? simplified_square_roots(x, P.t).subs(S.abbreviations).subs(F.Omega == norm_w)
+                            : simplified_square_roots(x.subs(S.abbreviations), P.t);
     };
     ex x = 0;
     for (const placeholder_coefficients& pc : S.terms) {

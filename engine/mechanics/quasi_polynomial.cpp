@@ -10,6 +10,8 @@
 //   of the integral and produces the secular powers of t exactly.
 #include "mechanics/quasi_polynomial.h"
 
+#include <algorithm>
+
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
@@ -185,16 +187,34 @@ quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
 // --- canonical form --------------------------------------------------------------
 
 void quasi_polynomial::add_term(const qp_term& u) {
-    const cex c = tidy_cex(u.c);
-    if (is_zero_cex(c)) return;
-    for (auto it = terms_.begin(); it != terms_.end(); ++it) {
-        if (it->k == u.k && is_zero_cex(it->lambda - u.lambda)) {
-            it->c = tidy_cex(it->c + c);
-            if (is_zero_cex(it->c)) terms_.erase(it);
+    if (u.c.re.is_zero() && u.c.im.is_zero()) return;
+    const cex lambda = tidy_cex(u.lambda);
+    raw_ = true;
+    for (auto& v : terms_)
+        if (v.k == u.k && v.lambda.re.is_equal(lambda.re) && v.lambda.im.is_equal(lambda.im)) {
+            v.c = v.c + u.c;
             return;
         }
+    terms_.push_back({u.c, u.k, lambda});
+}
+
+void quasi_polynomial::normalize() const {
+    if (!raw_) return;
+    std::vector<qp_term> out;
+    for (qp_term& u : terms_) {
+        // exponents equal but spelled differently (the tidied forms are not unique with radicals)
+        auto same = std::find_if(out.begin(), out.end(), [&](const qp_term& v) {
+            return v.k == u.k && is_zero_cex(v.lambda - u.lambda);
+        });
+        if (same != out.end()) same->c = same->c + u.c;
+        else out.push_back(std::move(u));
     }
-    terms_.push_back({c, u.k, tidy_cex(u.lambda)});
+    terms_.clear();
+    for (qp_term& u : out) {
+        u.c = tidy_cex(u.c);
+        if (!is_zero_cex(u.c)) terms_.push_back(std::move(u));
+    }
+    raw_ = false;
 }
 
 void quasi_polynomial::adopt_variable(const quasi_polynomial& o) {
@@ -245,21 +265,43 @@ ex canonical_frequency(const ex& b, int& sigma) {
 }  // namespace
 
 GiNaC::ex quasi_polynomial::to_ex() const {
-    ex re = 0, im = 0;
+    normalize();
+    // one coefficient per real function t^k e^(a t) cos(b t), t^k e^(a t) sin(b t) (the terms of
+    // lambda and its conjugate meet), each normalized once: not the whole sum expanded
+    struct basis {
+        unsigned k;
+        ex a, b;
+        ex cos_re = 0, sin_re = 0, cos_im = 0, sin_im = 0;
+    };
+    std::vector<basis> bs;
     for (const auto& u : terms_) {
         int sg = 1;
         const ex b = canonical_frequency(u.lambda.im, sg);
-        const ex cs = GiNaC::cos(b * t_), sn = sg * GiNaC::sin(b * t_);
-        const ex base = GiNaC::pow(t_, u.k) * GiNaC::exp(u.lambda.re * t_);
-        re += base * (u.c.re * cs - u.c.im * sn);
-        im += base * (u.c.re * sn + u.c.im * cs);
+        auto it = std::find_if(bs.begin(), bs.end(), [&](const basis& x) {
+            return x.k == u.k && x.a.is_equal(u.lambda.re) && x.b.is_equal(b);
+        });
+        if (it == bs.end()) {
+            bs.push_back({u.k, u.lambda.re, b});
+            it = bs.end() - 1;
+        }
+        // c e^(i sg b t) = c (cos + i sg sin)
+        it->cos_re += u.c.re;
+        it->sin_re -= sg * u.c.im;
+        it->cos_im += u.c.im;
+        it->sin_im += sg * u.c.re;
     }
-    re = tidy(re);
-    im = tidy(im);
+    ex re = 0, im = 0;
+    for (const basis& x : bs) {
+        const ex base = GiNaC::pow(t_, x.k) * GiNaC::exp(x.a * t_);
+        const ex cs = x.b.is_zero() ? ex(1) : GiNaC::cos(x.b * t_), sn = GiNaC::sin(x.b * t_);
+        re += base * (one_fraction(x.cos_re) * cs + (x.b.is_zero() ? ex(0) : one_fraction(x.sin_re) * sn));
+        im += base * (one_fraction(x.cos_im) * cs + (x.b.is_zero() ? ex(0) : one_fraction(x.sin_im) * sn));
+    }
     return im.is_zero() ? re : re + GiNaC::I * im;
 }
 
 cex quasi_polynomial::at_zero() const {
+    normalize();
     cex r(ex(0), ex(0));
     for (const auto& u : terms_)
         if (u.k == 0) r += u.c;

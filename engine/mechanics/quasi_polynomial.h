@@ -10,8 +10,8 @@
 // algebra layer), so that symbolic parameters never meet GiNaC's I. A real
 // function such as cos(b t) is the pair (1/2) e^{i b t} + (1/2) e^{-i b t}. Terms
 // with the same k and the same exponent (the difference normalizes to 0) are
-// combined, and terms whose coefficient normalizes to 0 are dropped, so the form
-// is canonical: t^k e^{lambda t} for distinct (k, lambda) are linearly
+// combined, and terms whose coefficient normalizes to 0 are dropped (lazily: see
+// normalize() below), so the form is canonical: t^k e^{lambda t} for distinct (k, lambda) are linearly
 // independent, hence a quasi-polynomial is the zero function iff is_zero().
 // Complex-valued quasi-polynomials are allowed (the solver needs them on the
 // complex idempotent component); real() / imag() / conj() split them.
@@ -72,9 +72,15 @@ public:
 
     /// The variable t (kept as an ex, so that a realsymbol is not sliced).
     const GiNaC::ex& variable() const { return t_; }
-    const std::vector<qp_term>& terms() const { return terms_; }
+    const std::vector<qp_term>& terms() const {
+        normalize();
+        return terms_;
+    }
     /// True iff the function is identically zero (canonical form, see above).
-    bool is_zero() const { return terms_.empty(); }
+    bool is_zero() const {
+        normalize();
+        return terms_.empty();
+    }
     /// True iff the imaginary part is identically zero.
     bool is_real() const;
 
@@ -113,9 +119,17 @@ private:
     quasi_polynomial(const GiNaC::ex& t) : t_(t), has_t_(true) {}
     void add_term(const qp_term& u);
     void adopt_variable(const quasi_polynomial& o);
+    /// The canonical form (above) from the raw one: every coefficient tidied once, terms
+    /// whose exponents are equal but spelled differently merged, zero terms dropped.
+    void normalize() const;
     GiNaC::ex t_;
     bool has_t_ = false;  // false only for the default-constructed zero
-    std::vector<qp_term> terms_;
+    // Arithmetic accumulates coefficients unsimplified (raw sums and products; exponents
+    // tidied, terms of structurally equal exponents merged) and normalizes once, when the
+    // form is read (terms, is_zero, to_ex, at_zero, ...): tidying every coefficient at
+    // every addition cost 96 % of a derivation with t^d e^(-k t) forcing (issue 15).
+    mutable std::vector<qp_term> terms_;
+    mutable bool raw_ = false;
 };
 
 /// int_0^t tau^k e^{lambda tau} dtau as a quasi-polynomial in t (exact; lambda = 0

@@ -117,6 +117,14 @@ GiNaC::ex normalize_trig_signs(const GiNaC::ex& e);
 /// of becoming one fraction over exp(...). Identity for doubles.
 GiNaC::ex tidy(const GiNaC::ex& x);
 
+/// A sum of fractions as one fraction over the product of their denominators' factors, each
+/// polynomial factor (a sum, up to its sign) taken as an opaque symbol while normalizing: the
+/// numerators are combined exactly (a zero sum gives 0), but a factor shared by the numerator
+/// and a denominator is not searched for (no multivariate gcd of the expanded products, which
+/// cost seconds on the solver's denominators (lambda_i - lambda_j)^m). Expressions with
+/// function calls as tidy().
+GiNaC::ex one_fraction(const GiNaC::ex& x);
+
 /// Half-integer powers of positive rationals in each product made one
 /// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221).
 GiNaC::ex canonical_radicals(const GiNaC::ex& e);

@@ -235,6 +235,36 @@ GiNaC::ex tidy(const GiNaC::ex& x) {
     return GiNaC::normal(e);
 }
 
+GiNaC::ex one_fraction(const GiNaC::ex& x) {
+    if (has_function_call(x)) return tidy(x);
+    // the polynomial bases of negative powers, up to sign, as fresh symbols
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> bases;  // (expanded base, symbol)
+    GiNaC::exmap to_symbol, back;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::power>(*it) || !GiNaC::is_a<GiNaC::add>(it->op(0)) ||
+            !GiNaC::is_a<GiNaC::numeric>(it->op(1)) || !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_negative())
+            continue;
+        const GiNaC::ex b = it->op(0);
+        if (to_symbol.count(b)) continue;
+        const GiNaC::ex e = GiNaC::expand(b);
+        GiNaC::ex sym;
+        for (const auto& [f, s] : bases) {
+            if (f.is_equal(e)) sym = s;
+            else if (GiNaC::expand(f + e).is_zero()) sym = -s;
+            if (!sym.is_zero()) break;
+        }
+        if (sym.is_zero()) {
+            sym = GiNaC::symbol();
+            bases.push_back({e, sym});
+            back[sym] = e;
+        }
+        to_symbol[b] = sym;
+    }
+    if (bases.empty()) return tidy(x);
+    const GiNaC::ex y = GiNaC::normal(GiNaC::expand(x.subs(to_symbol, GiNaC::subs_options::no_pattern)));
+    return y.subs(back, GiNaC::subs_options::no_pattern);
+}
+
 std::string message_text(const GiNaC::ex& e, std::size_t max) {
     std::ostringstream os;
     os << e;
