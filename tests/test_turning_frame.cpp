@@ -201,7 +201,14 @@ TEST(TurningFrame, BadInputIsRefusedWithTheReason) {
              {"C := ode(v' + w x v = 0, v(0) = v0)\neval(solve(C), [v0 = [1, 0, 0]], t = 2)", "has no value"},
              {"C := ode(v' + w x v = 0, v(0) = v0)\neval(solve(C), [v0 = [1, 0, 0]], t = -1)", "t >= 0"},
              {"C := ode(v' + w x v = 0, v(0) = v0)\ncheck(C, solve(C))", "verify(P, s, values, T)"},
-             {"C := ode(v' + w x v = 0, v(0) = v0)\nc := solve(C)\nc''", "first derivative only"}}) {
+             {"C := ode(v' + w x v = 0, v(0) = v0)\nc := solve(C)\nc''", "first derivative only"},
+             // a w(t) without a value at t = 0: named, not "division by zero" nor a divergent integral
+             {"ode(r'' + 2*[0, 0, 1/t] x r' + [0, 0, -1/t^2] x r + [0, 0, 1/t] x ([0, 0, 1/t] x r) = 0, r(0) = r0, "
+              "r'(0) = v0)",
+              "has no value at t = 0"},
+             {"ode(v' = v x [0, 0, 1/t], v(0) = v0)", "has no value at t = 0"},
+             {"ode(r'' = r' x [log(t), 0, 1], r(0) = r0, r'(0) = v0)", "has no value at t = 0"},
+             {"F([1/t, 0, 0], r0)", "has no value at t = 0"}}) {
         const std::size_t before = t.err.str().size();
         EXPECT_NE(t.run(b.script), 0) << b.script;
         const std::string msg = t.err.str().substr(before);

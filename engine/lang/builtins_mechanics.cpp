@@ -297,7 +297,12 @@ void register_mechanics_builtins(registry& r) {
         "(VI.2.9-12), (VI.3.118-119)", "vector u, x\nF((1 + sin(t))*u, x)", 2, 2,
         [](const builtin& b, const args_t& a, context& c) -> value {
             const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
-            if (w.is_zero() || x.is_zero()) return value(x);
+            if (w.is_zero() || x.is_zero() || equal(w, 0)) return value(x);
+            try {
+                mechanics::require_value_at_zero(w, t, "w(t)");
+            } catch (const domain_error& e) {
+                throw domain_error(b.name + ": " + e.what());
+            }
             if (!mechanics::depends_on_time(w, t)) {  // (VI.1.13-15) constant w: exp(K t) x, K = w x
                 const GiNaC::possymbol W("|w|");
                 const mechanics::rotation_operator_algebra R(W);

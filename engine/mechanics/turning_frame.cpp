@@ -12,6 +12,19 @@ namespace symrep::mechanics {
 
 using GiNaC::ex;
 
+void require_value_at_zero(const ex& w, const ex& t, const std::string& what) {
+    bool finite = true;
+    try {
+        const ex w0 = w.subs(t == 0);  // GiNaC evaluates 1/0, log(0) ... to an error
+        (void)w0;
+    } catch (const std::exception&) {  // GiNaC's pole_error: 1/t at t = 0
+        finite = false;
+    }
+    if (!finite)
+        throw domain_error(what + " = " + to_string(w) + " has no value at t = 0: the frame's angular velocity must be "
+                           "defined (and differentiable) from t = 0 on");
+}
+
 bool depends_on_time(const ex& e, const ex& t) {
     if (e.has(t)) return true;
     for (const ex& v : vector_symbols(e))
@@ -220,6 +233,7 @@ std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string
     varying = depends_on(T.w, t);  // t in it, or a declared vector function w(t)
     T.form = "the problem has the rotating-frame terms of w(t) = " + to_string(T.w) + " (" +
              to_string(int(M) * T.w) + " x " + P.unknown_name(M - 1) + "), but ";
+    if (varying) require_value_at_zero(T.w, t, "w(t)");
     const ex R = M == 2 ? *m * (xM + 2 * cross(T.w, xc) + cross(diff_t(T.w, t), x) + cross(T.w, cross(T.w, x)))
                         : *m * (xM + cross(T.w, x));
     const auto rest = split_by_unknown(P, P.expression - R);

@@ -58,6 +58,9 @@ std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string
 /// when the direction of w turns.
 std::optional<std::pair<GiNaC::ex, GiNaC::ex>> fixed_direction(const GiNaC::ex& w, const GiNaC::ex& t);
 
+/// domain_error "<what> = w has no value at t = 0 ..." when w(0) is not finite (1/t, a pole).
+void require_value_at_zero(const GiNaC::ex& w, const GiNaC::ex& t, const std::string& what);
+
 /// e depends on t: t occurs in it, or a vector declared as a function of t (vector w(t)).
 bool depends_on_time(const GiNaC::ex& e, const GiNaC::ex& t);
 
