@@ -17,7 +17,10 @@
 // starting guesses for every conic) and polished by Newton steps to full double
 // accuracy. Elliptic orbits reduce t modulo the period first, so chi stays
 // bounded over any number of revolutions. The Stumpff functions use their
-// series for |z| < 1 (no cancellation) and the closed forms beyond.
+// series for |z| < 1 (no cancellation) and the closed forms beyond. The method is
+// written once for any floating-point type in numeric/kepler_universal.h; these
+// are its double instances, and cpp_bin_float_50 (or wider) gives the reference
+// values (Kepler.FullDoubleAccuracyAgainstTheFiftyDigitReference).
 #pragma once
 
 #include <Eigen/Core>
