@@ -135,13 +135,16 @@ TEST(CauchyProblem, ForcedProblemsAreCheckedCoordinateFree) {
               0)
         << t.err.str();
     EXPECT_TRUE(t.val("check(P, s)").as_bool());
-    // the fast path proves 0 only: a wrong solution still goes by components (7 s for e^(-k t) g,
-    // measured; CauchyProblem.WrongSolutionsAreCaught keeps the refusals on a smaller problem)
+    // the fast path proves 0 only; a wrong solution is seen nonzero at one point (40 digits,
+    // every symbol a rational fixed by its name) instead of by components (7 s before)
     ASSERT_EQ(t.run("Q := ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = exp(-k*t)*g, r(0) = r0, r'(0) = v0)\n"
                     "q := solve(Q)"),
               0)
         << t.err.str();
     EXPECT_TRUE(t.val("check(Q, q)").as_bool());
+    EXPECT_FALSE(t.val("check(Q, q + t^2*exp(-k*t)*(w x g)/1000)").as_bool());
+    EXPECT_FALSE(t.val("check(Q, q + sin(w0*t)/w0*(w x g))").as_bool());
+    EXPECT_NE(t.out.str().find("the residual is"), std::string::npos);
 }
 
 // Cross products along several vectors on one derivative are one operator: the

@@ -429,11 +429,11 @@ void register_mechanics_builtins(registry& r) {
                 // false only when shown: a residual or difference that is neither proved 0 nor
                 // seen nonzero at a point is undecided (scalar/equality.h), never reported as false
                 std::vector<std::pair<std::string, ex>> open;
-                if (!k.residual_zero) open.push_back({"the residual", k.residual});
+                bool some_no = k.residual_seen_nonzero;
+                if (!k.residual_zero && !k.residual_seen_nonzero) open.push_back({"the residual", k.residual});
                 for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
                     if (!k.initial_differences[m].is_zero())
                         open.push_back({P.unknown_name(m) + "(0) minus its value", k.initial_differences[m]});
-                bool some_no = false;
                 std::string undecided;
                 for (const auto& [what, x] : open) {
                     const zero_decision z = P.is_vector ? decide_zero_vector(x) : decide_zero(x);

@@ -95,6 +95,8 @@ struct solution_check {
     GiNaC::ex residual;                   ///< E(s, s', ...), simplified
     std::vector<GiNaC::ex> initial_differences;  ///< s^(m)(0) - X_m
     bool residual_zero = false;
+    /// The residual was seen nonzero at a point (numbers for every symbol, 40 digits): not 0.
+    bool residual_seen_nonzero = false;
     bool initial_ok = false;
     /// With floating-point numbers in P or s, what is not exactly 0 may be rounding:
     /// it is taken as 0 when every coefficient of it is at most rounding_tolerance()
