@@ -25,7 +25,6 @@
 #include "mechanics/relative_motion.h"
 #include "mechanics/turning_frame.h"
 #include "mechanics/reduced_solution.h"
-#include "mechanics/quasi_polynomial.h"
 #include "numeric/verify.h"
 #include "numeric/quadrature.h"
 #include "vector/vector.h"
@@ -169,6 +168,19 @@ std::vector<double> times_arg(const args_t& a, std::size_t i, const builtin& b, 
     return out;
 }
 
+// The arguments mu, R0, V0, rho0, rho0' of the relative-motion builtins.
+struct relative_arguments {
+    double mu;
+    Eigen::Vector3d R0, V0;
+    mechanics::relative_state start;
+};
+relative_arguments relative_args(const args_t& a, const builtin& b) {
+    const double mu = to_double(arg_ex(a, 0, b), b, "mu");
+    if (!(mu > 0)) throw type_error(b.name + ": mu must be positive");
+    return {mu, number_vector(a, 1, b, "R0"), number_vector(a, 2, b, "V0"),
+            {number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")}};
+}
+
 // [[x, y, z], [x', y', z']] for one time, a list of those for several.
 value relative_states(const std::vector<mechanics::relative_state>& s, bool several) {
     list out;
@@ -303,36 +315,19 @@ void register_mechanics_builtins(registry& r) {
             } catch (const domain_error& e) {
                 throw domain_error(b.name + ": " + e.what());
             }
-            if (!mechanics::depends_on_time(w, t)) {  // (VI.1.13-15) constant w: exp(K t) x, K = w x
-                const GiNaC::possymbol W("|w|");
-                const mechanics::rotation_operator_algebra R(W);
-                const element E = R.exp_minus_Kt(t);
-                auto co = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
-                const ex y = co(0) * x - co(1) * cross(w, x) + co(2) * cross(w, cross(w, x));
-                return value(vector_symbols(y).empty() ? subs_components(y, {}) : y);
-            }
-            if (const auto d = mechanics::fixed_direction(w, t)) {  // (VI.2.12) w = s(t) u
-                const ex& u = d->second;
-                const ex U = norm(u);
-                ex a_t;
-                try {
-                    a_t = U * mechanics::quasi_polynomial::from_ex(d->first, t).antiderivative().to_ex();
-                } catch (const std::exception&) {  // int_0^t s not elementary: an integral object
-                    const ex& tau = mechanics::integration_variable();
-                    a_t = U * GiNaC::integral(tau, 0, t, d->first.subs(t == tau));
-                }
-                const ex y = GiNaC::cos(a_t) * x + GiNaC::sin(a_t) / U * cross(u, x) +
-                             (1 - GiNaC::cos(a_t)) / (U * U) * dot(u, x) * u;
-                return value(vector_symbols(y).empty() ? subs_components(y, {}) : y);  // literals: one literal
-            }
-            // F_w = F_(-v) with v = -w: the Q of v (turning_frame.h)
+            // F_w = F_(-v) with v = -w, the Q of v (turning_frame.h): closed for a fixed direction
+            // (a constant w too; VI.2.12, the angle an integral object when not elementary) and for
+            // a regular precession
             mechanics::turning_frame_form F;
             F.terms.w = -w;
-            F.precessing = mechanics::regular_precession(-w, t);
-            if (F.precessing) {
-                const ex y = *mechanics::closed_rotation(F, x, t);
-                return value(vector_symbols(y).empty() ? subs_components(y, {}) : y);
+            if (const auto d = mechanics::fixed_direction(w, t)) {  // -w = s(t) (-u): the angle of w about -u
+                F.u = -d->second;
+                F.angle = mechanics::rotation_angle(d->first, d->second, t, true);
+            } else {
+                F.precessing = mechanics::regular_precession(-w, t);
             }
+            if (const auto y = mechanics::closed_rotation(F, x, t))  // literals: one literal
+                return value(vector_symbols(*y).empty() ? subs_components(*y, {}) : *y);
             if (mechanics::depends_on_time(x, t))
                 throw domain_error(b.name + ": w(t) = " + print_ex(w) + " turns, so R has no closed form, and x = " +
                                    print_ex(x) + " depends on t: F_w(x) is evaluated for a constant x only "
@@ -611,13 +606,11 @@ void register_mechanics_builtins(registry& r) {
         "times).",
         "(VI.3.132-138)", "relative_motion(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], t = 600)",
         6, 6, [](const builtin& b, const args_t& a, context&) -> value {
-            const double mu = to_double(arg_ex(a, 0, b), b, "mu");
-            const Eigen::Vector3d R0 = number_vector(a, 1, b, "R0"), V0 = number_vector(a, 2, b, "V0");
-            const mechanics::relative_state s{number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")};
+            const relative_arguments r = relative_args(a, b);
             bool several = false;
             std::vector<mechanics::relative_state> out;
             for (const double t : times_arg(a, 5, b, several))
-                out.push_back(mechanics::relative_motion_exact(mu, R0, V0, s, t));
+                out.push_back(mechanics::relative_motion_exact(r.mu, r.R0, r.V0, r.start, t));
             return relative_states(out, several);
         });
     add(r, "clohessy_wiltshire", "clohessy_wiltshire(n, rho0, rho0', t = T)",
@@ -641,10 +634,7 @@ void register_mechanics_builtins(registry& r) {
         "relative_motion.",
         "", "tschauner_hempel(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const double mu = to_double(arg_ex(a, 0, b), b, "mu");
-            if (!(mu > 0)) throw type_error(b.name + ": mu must be positive");
-            const Eigen::Vector3d R0 = number_vector(a, 1, b, "R0"), V0 = number_vector(a, 2, b, "V0");
-            const mechanics::relative_state s{number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")};
+            const relative_arguments r = relative_args(a, b);
             bool several = false;
             std::vector<double> times = times_arg(a, 5, b, several);
             std::vector<std::size_t> order(times.size());
@@ -652,7 +642,7 @@ void register_mechanics_builtins(registry& r) {
             std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
             std::vector<double> sorted;
             for (const std::size_t k : order) sorted.push_back(times[k]);
-            const auto states = mechanics::tschauner_hempel(mu, R0, V0, s, sorted);
+            const auto states = mechanics::tschauner_hempel(r.mu, r.R0, r.V0, r.start, sorted);
             std::vector<mechanics::relative_state> out(times.size());
             for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
             return relative_states(out, several);
@@ -664,13 +654,10 @@ void register_mechanics_builtins(registry& r) {
         "relative_motion.",
         "", "yamanaka_ankersen(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const double mu = to_double(arg_ex(a, 0, b), b, "mu");
-            if (!(mu > 0)) throw type_error(b.name + ": mu must be positive");
-            const Eigen::Vector3d R0 = number_vector(a, 1, b, "R0"), V0 = number_vector(a, 2, b, "V0");
-            const mechanics::relative_state s{number_vector(a, 3, b, "rho0"), number_vector(a, 4, b, "rho0'")};
+            const relative_arguments r = relative_args(a, b);
             bool several = false;
             const std::vector<double> times = times_arg(a, 5, b, several);
-            return relative_states(mechanics::yamanaka_ankersen(mu, R0, V0, s, times), several);
+            return relative_states(mechanics::yamanaka_ankersen(r.mu, r.R0, r.V0, r.start, times), several);
         });
 }
 

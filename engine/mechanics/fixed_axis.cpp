@@ -40,12 +40,7 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         const ex w = F.s * F.u;
         // a(t) = |u| int_0^t s: in closed form for a quasi-polynomial s, else the integral
         // object (VI.2.12 holds for any signed rate; eval and verify by quadrature)
-        try {
-            F.angle = norm(F.u) * quasi_polynomial::from_ex(F.s, P.t).antiderivative().to_ex();
-        } catch (const domain_error&) {
-            const ex& tau = integration_variable();
-            F.angle = norm(F.u) * GiNaC::integral(tau, 0, P.t, F.s.subs(P.t == tau));
-        }
+        F.angle = *rotation_angle(F.s, F.u, P.t, true);
         F.m = T->m;
         F.k = T->g;
         // F along u passes Q^T unchanged; across u it is rotated (solve_fixed_axis)

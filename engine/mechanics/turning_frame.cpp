@@ -1,6 +1,7 @@
 // symrep/mechanics/turning_frame.cpp -- the reading of rotating-frame problems
 // and their reduction to the inertial problem (turning_frame.h; thesis VI.2-VI.3).
 #include "mechanics/turning_frame.h"
+#include "mechanics/fixed_axis.h"
 
 #include <map>
 
@@ -15,14 +16,23 @@ using GiNaC::ex;
 void require_value_at_zero(const ex& w, const ex& t, const std::string& what) {
     bool finite = true;
     try {
-        const ex w0 = w.subs(t == 0);  // GiNaC evaluates 1/0, log(0) ... to an error
-        (void)w0;
+        static_cast<void>(w.subs(t == 0));  // GiNaC evaluates 1/0, log(0) ... to an error
     } catch (const std::exception&) {  // GiNaC's pole_error: 1/t at t = 0
         finite = false;
     }
     if (!finite)
         throw domain_error(what + " = " + to_string(w) + " has no value at t = 0: the frame's angular velocity must be "
                            "defined (and differentiable) from t = 0 on");
+}
+
+std::optional<ex> rotation_angle(const ex& s, const ex& u, const ex& t, bool integral_object) {
+    try {
+        return norm(u) * quasi_polynomial::from_ex(s, t).antiderivative().to_ex();
+    } catch (const domain_error&) {
+        if (!integral_object) return std::nullopt;
+        const ex& tau = integration_variable();
+        return norm(u) * GiNaC::integral(tau, 0, t, s.subs(t == tau));
+    }
 }
 
 bool depends_on_time(const ex& e, const ex& t) {
@@ -35,8 +45,6 @@ bool depends_on_time(const ex& e, const ex& t) {
 namespace {
 
 using vmap = std::map<ex, ex, GiNaC::ex_is_less>;
-
-bool depends_on(const ex& e, const ex& t) { return depends_on_time(e, t); }
 
 bool has_unknown(const cauchy_problem& P, const ex& e);
 
@@ -116,7 +124,7 @@ std::optional<std::pair<ex, ex>> fixed_direction(const ex& w, const ex& t) {
     ex u = 0;
     for (const vector_term& term : wt) {
         const ex ratio = GiNaC::normal(term.coefficient / s);
-        if (ratio.has(t) || depends_on(term.monomial, t)) return std::nullopt;  // the direction turns
+        if (ratio.has(t) || depends_on_time(term.monomial, t)) return std::nullopt;  // the direction turns
         u += ratio * term.monomial;
     }
     return std::make_pair(s, u);
@@ -129,7 +137,7 @@ std::optional<turning_frame_form::precession> regular_precession(const ex& w, co
         if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
             for (int i = 0; i < 3; ++i)
                 terms.push_back({term.coefficient * term.monomial.op(i), vector_literal(i == 0, i == 1, i == 2)});
-        } else if (depends_on(term.monomial, t)) {
+        } else if (depends_on_time(term.monomial, t)) {
             return std::nullopt;
         } else {
             terms.push_back({term.coefficient, term.monomial});
@@ -230,7 +238,7 @@ std::optional<frame_terms> read_frame_terms(const cauchy_problem& P, std::string
     T.m = *m;
     T.w = cross1 / (int(M) * *m);
     T.p = GiNaC::possymbol("p");
-    varying = depends_on(T.w, t);  // t in it, or a declared vector function w(t)
+    varying = depends_on_time(T.w, t);  // t in it, or a declared vector function w(t)
     T.form = "the problem has the rotating-frame terms of w(t) = " + to_string(T.w) + " (" +
              to_string(int(M) * T.w) + " x " + P.unknown_name(M - 1) + "), but ";
     if (varying) require_value_at_zero(T.w, t, "w(t)");
@@ -271,7 +279,7 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
         if (why) *why = inner;
         return std::nullopt;
     }
-    const bool reasons = depends_on(T->w, P.t) || T->g.has(T->p);
+    const bool reasons = depends_on_time(T->w, P.t) || T->g.has(T->p);
     auto refuse = [&](const std::string& reason) -> std::optional<turning_frame_form> {
         if (why && reasons) *why = reason;
         return std::nullopt;
@@ -293,11 +301,8 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
     if (!T->w.is_zero() && !fixed_direction(T->w, t)) F.precessing = regular_precession(T->w, t);
     if (const auto d = fixed_direction(T->w, t)) {
         F.u = d->second;
-        try {
-            F.angle = norm(*F.u) * quasi_polynomial::from_ex(d->first, t).antiderivative().to_ex();
-        } catch (const std::exception&) {
-            F.angle = std::nullopt;  // int s not elementary here: Q numeric (Magnus) like a turning w
-        }
+        // int s not elementary: Q numeric (Magnus) like a turning w
+        F.angle = rotation_angle(d->first, d->second, t, false);
     }
     const ex& x = P.unknowns[0];
     if (P.order() == 1) {

@@ -64,6 +64,11 @@ void require_value_at_zero(const GiNaC::ex& w, const GiNaC::ex& t, const std::st
 /// e depends on t: t occurs in it, or a vector declared as a function of t (vector w(t)).
 bool depends_on_time(const GiNaC::ex& e, const GiNaC::ex& t);
 
+/// (VI.2.12) a(t) = |u| int_0^t s for w = s(t) u: in closed form when s is a quasi-polynomial;
+/// otherwise the integral object |u| int_0^t s(tau) dtau when `integral_object`, else nothing.
+std::optional<GiNaC::ex> rotation_angle(const GiNaC::ex& s, const GiNaC::ex& u, const GiNaC::ex& t,
+                                        bool integral_object);
+
 /// The reading of a problem solved by Thm VI.3.2.1.
 struct turning_frame_form {
     frame_terms terms;

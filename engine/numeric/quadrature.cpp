@@ -110,7 +110,6 @@ double integrate_nested(const ex& x, double a, double b, const ex& f) {
             throw domain_error("integral: the integrand " + message_text(f) + " has symbols without values");
     const compiled_function F = compile(outer, vars);
     bool finite = true;
-    std::vector<double> in(vars.size());
     auto h = [&](double t) {
         // each inner integral by the same rule at this node of the outer one
         std::vector<double> at(vars.size());
