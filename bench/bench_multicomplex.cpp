@@ -11,6 +11,7 @@
 
 #include "algebra/multicomplex.h"
 #include "algebra/multicomplex_double.h"
+#include "algebra/multicomplex_transform.h"
 
 using namespace symrep;
 
@@ -50,6 +51,32 @@ void BM_MulticomplexDouble_Exp(benchmark::State& state) {
     set_counters(state, A);
 }
 
+// Before issue 15.5: one call of libm's exp, cos and sin per component (III.1.45-52),
+// kept here to measure the batched exp against in one run.
+void BM_MulticomplexDouble_ExpScalar(benchmark::State& state) {
+    const multicomplex_d A(static_cast<unsigned>(state.range(0)));
+    const auto a = random_element(A, 4);
+    for (auto _ : state) {
+        auto c = A.idempotent_components(a);
+        for (auto& z : c) z = multicomplex_component_exp<double>(z.real(), z.imag(), 0.5);
+        benchmark::DoNotOptimize(A.from_idempotent_components(c));
+    }
+    set_counters(state, A);
+}
+
+// The bound for exp (issue 15.5): the two transforms alone, to the idempotent
+// components and back, on a reused buffer as exp and multiply use.
+void BM_MulticomplexDouble_TransformPair(benchmark::State& state) {
+    const multicomplex_d A(static_cast<unsigned>(state.range(0)));
+    const auto a = random_element(A, 4);
+    multicomplex_d::components c;
+    for (auto _ : state) {
+        multicomplex_components_into<double>(a, A.order(), c);
+        benchmark::DoNotOptimize(multicomplex_from_components_inplace<double>(c, A.order()));
+    }
+    set_counters(state, A);
+}
+
 void BM_MulticomplexDouble_ProductStructure(benchmark::State& state) {
     const multicomplex_d A(static_cast<unsigned>(state.range(0)));
     const auto a = random_element(A, 1), b = random_element(A, 2);
@@ -74,5 +101,7 @@ void BM_MulticomplexExact_Product(benchmark::State& state) {
 BENCHMARK(BM_MulticomplexDouble_Product)->DenseRange(1, 20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MulticomplexDouble_Inverse)->DenseRange(1, 20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MulticomplexDouble_Exp)->DenseRange(1, 20)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MulticomplexDouble_ExpScalar)->DenseRange(1, 20)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MulticomplexDouble_TransformPair)->DenseRange(1, 20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MulticomplexDouble_ProductStructure)->DenseRange(1, 12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MulticomplexExact_Product)->DenseRange(1, 8)->Unit(benchmark::kMicrosecond);

@@ -1,6 +1,8 @@
 // symrep/algebra/multicomplex_double.cpp -- the double-precision multicomplex path.
 #include "algebra/multicomplex_double.h"
 
+#include "algebra/batched_exp.h"
+
 #include <algorithm>
 #include <mutex>
 #include <sstream>
@@ -161,10 +163,14 @@ multicomplex_d::vector multicomplex_d::inverse(const vector& w, double rel_tol) 
 }
 
 // (III.1.45-52)
+// The componentwise exponentials in SIMD blocks (batched_exp.h), on the thread's scratch
+// buffer as in multiply().
 multicomplex_d::vector multicomplex_d::exp(const vector& w, double t) const {
-    auto c = idempotent_components(w);
-    for (auto& z : c) z = multicomplex_component_exp<double>(z.real(), z.imag(), t);
-    return multicomplex_from_components<double>(std::move(c), n_);
+    check_size(w, "exp");
+    thread_local components c;
+    multicomplex_components_into<double>(w, n_, c);
+    exp_components(c.data(), c.size(), t);
+    return multicomplex_from_components_inplace<double>(c, n_);
 }
 
 // (III.1.53)

@@ -257,14 +257,14 @@ void register_core_builtins(registry& r) {
             const GiNaC::symbol& x = arg_symbol(a, 1, b);
             const long n = a.size() > 2 ? arg_int(a, 2, b, 0, 1000) : 1;
             if (a[0].is_reduction()) {  // a solution by reduction (VI.3): its derivative in t is r'
-                reduction r = a[0].as_reduction();
-                if (!x.is_equal(ex_to<GiNaC::symbol>(r.solution->problem->t)))
+                reduction red = a[0].as_reduction();
+                if (!x.is_equal(ex_to<GiNaC::symbol>(red.solution->problem->t)))
                     throw type_error(b.name + ": a solution by reduction depends on " +
-                                     output::print_ex(r.solution->problem->t) + " only");
-                r.derivative += int(n);
-                if (r.derivative > 1)
+                                     output::print_ex(red.solution->problem->t) + " only");
+                red.derivative += int(n);
+                if (red.derivative > 1)
                     throw type_error(b.name + ": a solution by reduction has its first derivative only, not higher ones");
-                return value(r);
+                return value(red);
             }
             return map_value(a[0], b, [&](const ex& e) {
                 guard_terms(expression_nodes(e) * double(n), b.name.c_str());

@@ -479,17 +479,17 @@ void register_mechanics_builtins(registry& r) {
         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
         [](const builtin& b, const args_t& a, context&) -> value {
             if (a[0].is_reduction()) {  // r = F_(-w)(psi) (or r') at the given times, numerically
-                const reduction& r = a[0].as_reduction();
+                const reduction& red = a[0].as_reduction();
                 if (a.size() != 3)
                     throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
                 const ex& tr = arg_ex(a, 2, b);
-                if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(r.solution->problem->t))
+                if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(red.solution->problem->t))
                     throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
                 std::vector<double> times;
                 const ex T = tr.rhs();
                 for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
                     times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
-                const auto x = reduction_at(r, reduction_values(r, read_values(a[1], b, 1)), times, b);
+                const auto x = reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
                 if (x.size() == 1 && !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T)) return triple_value(x[0]);
                 list out;
                 for (const auto& v : x) out.push_back(triple_value(v));
@@ -606,11 +606,11 @@ void register_mechanics_builtins(registry& r) {
         "times).",
         "(VI.3.132-138)", "relative_motion(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], t = 600)",
         6, 6, [](const builtin& b, const args_t& a, context&) -> value {
-            const relative_arguments r = relative_args(a, b);
+            const relative_arguments ra = relative_args(a, b);
             bool several = false;
             std::vector<mechanics::relative_state> out;
             for (const double t : times_arg(a, 5, b, several))
-                out.push_back(mechanics::relative_motion_exact(r.mu, r.R0, r.V0, r.start, t));
+                out.push_back(mechanics::relative_motion_exact(ra.mu, ra.R0, ra.V0, ra.start, t));
             return relative_states(out, several);
         });
     add(r, "clohessy_wiltshire", "clohessy_wiltshire(n, rho0, rho0', t = T)",
@@ -634,7 +634,7 @@ void register_mechanics_builtins(registry& r) {
         "relative_motion.",
         "", "tschauner_hempel(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const relative_arguments r = relative_args(a, b);
+            const relative_arguments ra = relative_args(a, b);
             bool several = false;
             std::vector<double> times = times_arg(a, 5, b, several);
             std::vector<std::size_t> order(times.size());
@@ -642,7 +642,7 @@ void register_mechanics_builtins(registry& r) {
             std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
             std::vector<double> sorted;
             for (const std::size_t k : order) sorted.push_back(times[k]);
-            const auto states = mechanics::tschauner_hempel(r.mu, r.R0, r.V0, r.start, sorted);
+            const auto states = mechanics::tschauner_hempel(ra.mu, ra.R0, ra.V0, ra.start, sorted);
             std::vector<mechanics::relative_state> out(times.size());
             for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
             return relative_states(out, several);
@@ -654,10 +654,10 @@ void register_mechanics_builtins(registry& r) {
         "relative_motion.",
         "", "yamanaka_ankersen(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
         [](const builtin& b, const args_t& a, context&) -> value {
-            const relative_arguments r = relative_args(a, b);
+            const relative_arguments ra = relative_args(a, b);
             bool several = false;
             const std::vector<double> times = times_arg(a, 5, b, several);
-            return relative_states(mechanics::yamanaka_ankersen(r.mu, r.R0, r.V0, r.start, times), several);
+            return relative_states(mechanics::yamanaka_ankersen(ra.mu, ra.R0, ra.V0, ra.start, times), several);
         });
 }
 

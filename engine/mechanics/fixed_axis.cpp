@@ -25,11 +25,6 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
             if (why) *why = inner;
             return std::nullopt;
         }
-        const bool varying = T->w.has(P.t) || !vector_symbols(diff_t(T->w, P.t)).empty();  // a reason is given only for a w that depends on t
-        auto refuse = [&](const std::string& reason) -> std::optional<fixed_axis_form> {
-            if (why && varying) *why = reason;
-            return std::nullopt;
-        };
         const auto d = fixed_direction(T->w, P.t);
         // a turning direction or a nonlinear central field: no closed form, and no reason
         // from here (turning_frame.h reads it, with Q or psi numeric)
