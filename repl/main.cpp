@@ -6,6 +6,7 @@
 //   symrep                  interactive prompt (standard input a terminal)
 //   symrep --doc            print the Markdown function reference
 // Exit status: 0 when every statement succeeded, 1 otherwise, 2 on bad usage.
+#include <sys/personality.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -66,7 +67,25 @@ int interactive(symrep::lang::session& s) { return symrep::repl::interactive(s);
 
 }  // namespace
 
+namespace {
+// GiNaC seeds the hash value of every object with the address of its type's name
+// (GiNaC's hash_seed.h), so under address-space randomization the internal order of
+// the terms of a sum changes from run to run, and with it the shape GiNaC's normal()
+// and gcd give a polynomial (collected in k in one run, in w0 in the next). The
+// printer sorts terms, but cannot undo a different shape: the program runs itself
+// once more without randomization, so that the same input prints the same bytes.
+// Where the system refuses (a sandbox without personality()), it goes on as it is.
+void run_without_address_randomization(char** argv) {
+    const int current = ::personality(0xffffffff);
+    if (current == -1 || (current & ADDR_NO_RANDOMIZE)) return;
+    if (::personality(static_cast<unsigned long>(current) | ADDR_NO_RANDOMIZE) == -1) return;
+    ::execv("/proc/self/exe", argv);  // returns only on failure: go on randomized
+    ::personality(static_cast<unsigned long>(current));
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+    run_without_address_randomization(argv);
     std::vector<std::pair<bool, std::string>> jobs;  // (is_code, text/path)
     symrep::lang::output_options opts;
     opts.caret = true;

@@ -489,7 +489,8 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
     ex x = 0;
     for (const placeholder_coefficients& pc : S.terms) {
         const ex v = data.at(pc.vector);
-        const ex c0 = back(pc.c[0].to_ex()), c1 = back(pc.c[1].to_ex()), c2 = back(pc.c[2].to_ex());
+        const ex c0 = back(pc.c[0].to_ex_untidied()), c1 = back(pc.c[1].to_ex_untidied()),
+                 c2 = back(pc.c[2].to_ex_untidied());
         if (!P.is_vector || F.axis.is_zero()) {
             if (!is_zero_scalar(c1) || !is_zero_scalar(c2))
                 throw algebra_error("internal: K terms without an axis in the solution of " + P.name);

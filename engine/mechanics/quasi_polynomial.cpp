@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include "scalar/equality.h"
+#include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
 
@@ -188,8 +189,15 @@ quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
 
 void quasi_polynomial::add_term(const qp_term& u) {
     if (u.c.re.is_zero() && u.c.im.is_zero()) return;
-    const cex lambda = tidy_cex(u.lambda);
     raw_ = true;
+    // an exponent already here as it is spelled (the usual case in sums and products of
+    // normalized quasi-polynomials) needs no tidying
+    for (auto& v : terms_)
+        if (v.k == u.k && v.lambda.re.is_equal(u.lambda.re) && v.lambda.im.is_equal(u.lambda.im)) {
+            v.c = v.c + u.c;
+            return;
+        }
+    const cex lambda = tidy_cex(u.lambda);
     for (auto& v : terms_)
         if (v.k == u.k && v.lambda.re.is_equal(lambda.re) && v.lambda.im.is_equal(lambda.im)) {
             v.c = v.c + u.c;
@@ -198,21 +206,61 @@ void quasi_polynomial::add_term(const qp_term& u) {
     terms_.push_back({u.c, u.k, lambda});
 }
 
+std::vector<qp_term> quasi_polynomial::merged_terms() const {
+    std::vector<qp_term> out;
+    // exponents equal but spelled differently (the tidied forms are not unique with radicals):
+    // each exponent's value at one point first, so that only exponents that agree there go
+    // to the exact test modulo square roots (all pairs did: most of the reduced Foucault time)
+    // (computed when first needed: most exponents are the same expression or none is near)
+    struct values {
+        bool known = false;
+        point_value re, im;
+    };
+    std::vector<values> at;
+    auto value_of = [](values& v, const qp_term& u) -> const values& {
+        if (!v.known) v = {true, value_at_generic_point(u.lambda.re), value_at_generic_point(u.lambda.im)};
+        return v;
+    };
+    for (const qp_term& u : terms_) {
+        values here;
+        std::size_t same = 0;
+        for (; same < out.size(); ++same) {
+            const qp_term& v = out[same];
+            if (v.k != u.k) continue;
+            if (v.lambda.re.is_equal(u.lambda.re) && v.lambda.im.is_equal(u.lambda.im)) break;
+            const cex d = v.lambda - u.lambda;
+            if (!has_symbolic_square_root(d.re) && !has_symbolic_square_root(d.im)) {
+                if (is_zero_cex(d)) break;  // rational: the exact test is cheap
+                continue;
+            }
+            const values &a = value_of(at[same], v), &b = value_of(here, u);
+            if (seen_different(a.re, b.re) || seen_different(a.im, b.im)) continue;
+            if (is_zero_cex(d)) break;
+        }
+        if (same < out.size()) {
+            out[same].c = out[same].c + u.c;
+        } else {
+            out.push_back(u);
+            at.push_back(here);
+        }
+    }
+    return out;
+}
+
 void quasi_polynomial::normalize() const {
     if (!raw_) return;
-    std::vector<qp_term> out;
-    for (qp_term& u : terms_) {
-        // exponents equal but spelled differently (the tidied forms are not unique with radicals)
-        auto same = std::find_if(out.begin(), out.end(), [&](const qp_term& v) {
-            return v.k == u.k && is_zero_cex(v.lambda - u.lambda);
-        });
-        if (same != out.end()) same->c = same->c + u.c;
-        else out.push_back(std::move(u));
-    }
+    std::vector<qp_term> out = merged_terms();
     terms_.clear();
+    static const point_value zero = value_at_generic_point(0);
     for (qp_term& u : out) {
         u.c = tidy_cex(u.c);
-        if (!is_zero_cex(u.c)) terms_.push_back(std::move(u));
+        // with radicals, seen nonzero at the point spares the exact test modulo square roots
+        // (most coefficients are not 0); without, that test is cheap
+        const bool radicals = has_symbolic_square_root(u.c.re) || has_symbolic_square_root(u.c.im);
+        if ((radicals && (seen_different(value_at_generic_point(u.c.re), zero) ||
+                          seen_different(value_at_generic_point(u.c.im), zero))) ||
+            !is_zero_cex(u.c))
+            terms_.push_back(std::move(u));
     }
     raw_ = false;
 }
@@ -266,6 +314,17 @@ ex canonical_frequency(const ex& b, int& sigma) {
 
 GiNaC::ex quasi_polynomial::to_ex() const {
     normalize();
+    return real_form(terms_, true);
+}
+
+GiNaC::ex quasi_polynomial::to_ex_untidied() const {
+    return raw_ ? real_form(merged_terms(), false) : real_form(terms_, true);
+}
+
+GiNaC::ex quasi_polynomial::real_form(const std::vector<qp_term>& terms, bool tidied) const {
+    // tidied terms: their sum over one fraction (no gcd of the expanded products); raw ones:
+    // one tidy of the sum (the terms were never brought to lowest terms)
+    const auto fraction = [tidied](const ex& c) { return tidied ? one_fraction(c) : tidy(c); };
     // one coefficient per real function t^k e^(a t) cos(b t), t^k e^(a t) sin(b t) (the terms of
     // lambda and its conjugate meet), each normalized once: not the whole sum expanded
     struct basis {
@@ -274,7 +333,7 @@ GiNaC::ex quasi_polynomial::to_ex() const {
         ex cos_re = 0, sin_re = 0, cos_im = 0, sin_im = 0;
     };
     std::vector<basis> bs;
-    for (const auto& u : terms_) {
+    for (const auto& u : terms) {
         int sg = 1;
         const ex b = canonical_frequency(u.lambda.im, sg);
         auto it = std::find_if(bs.begin(), bs.end(), [&](const basis& x) {
@@ -294,8 +353,8 @@ GiNaC::ex quasi_polynomial::to_ex() const {
     for (const basis& x : bs) {
         const ex base = GiNaC::pow(t_, x.k) * GiNaC::exp(x.a * t_);
         const ex cs = x.b.is_zero() ? ex(1) : GiNaC::cos(x.b * t_), sn = GiNaC::sin(x.b * t_);
-        re += base * (one_fraction(x.cos_re) * cs + (x.b.is_zero() ? ex(0) : one_fraction(x.sin_re) * sn));
-        im += base * (one_fraction(x.cos_im) * cs + (x.b.is_zero() ? ex(0) : one_fraction(x.sin_im) * sn));
+        re += base * (fraction(x.cos_re) * cs + (x.b.is_zero() ? ex(0) : fraction(x.sin_re) * sn));
+        im += base * (fraction(x.cos_im) * cs + (x.b.is_zero() ? ex(0) : fraction(x.sin_im) * sn));
     }
     return im.is_zero() ? re : re + GiNaC::I * im;
 }

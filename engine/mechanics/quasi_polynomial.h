@@ -87,6 +87,13 @@ public:
     /// The real-form expression: sum of c t^k e^{a t} cos(b t) / sin(b t) terms.
     /// For a complex-valued quasi-polynomial returns re + I*im.
     GiNaC::ex to_ex() const;
+    /// The same sum for a caller that brings each coefficient of a function of t to its own
+    /// canonical form (the solver: in the field of its square root): exponents merged as in
+    /// normalize(), the coefficients of each real function summed and put over one fraction
+    /// (one_fraction), but not tidied term by term first. Equal to to_ex() as a function; a
+    /// coefficient that is 0 only modulo square roots may be left as such (the caller's
+    /// canonical form decides it).
+    GiNaC::ex to_ex_untidied() const;
     /// Real and imaginary parts as quasi-polynomials ((f + conj f)/2, (f - conj f)/(2i)).
     quasi_polynomial real() const;
     quasi_polynomial imag() const;
@@ -122,6 +129,9 @@ private:
     /// The canonical form (above) from the raw one: every coefficient tidied once, terms
     /// whose exponents are equal but spelled differently merged, zero terms dropped.
     void normalize() const;
+    /// The terms with equal exponents merged (coefficients summed as they are).
+    std::vector<qp_term> merged_terms() const;
+    GiNaC::ex real_form(const std::vector<qp_term>& terms, bool tidied) const;
     GiNaC::ex t_;
     bool has_t_ = false;  // false only for the default-constructed zero
     // Arithmetic accumulates coefficients unsimplified (raw sums and products; exponents

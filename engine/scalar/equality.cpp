@@ -2,6 +2,7 @@
 #include "scalar/equality.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -130,6 +131,37 @@ std::string witness_text(const zero_decision& d) {
         first = false;
     }
     return out;
+}
+
+point_value value_at_generic_point(const GiNaC::ex& x) {
+    point_value out;
+    GiNaC::exmap point;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !point.count(*it)) {
+            const std::string& name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+            std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name
+            for (unsigned char c : name) h = (h ^ c) * 1099511628211ull;
+            point[*it] = GiNaC::numeric(long(1100 + h % 1800), 1000);
+        }
+    GiNaC::ex at;
+    try {
+        at = point.empty() ? x : x.subs(point, GiNaC::subs_options::no_pattern);
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception&) {
+        return out;  // a pole at this point
+    }
+    out.ok = evaluate(at, 20, out.low) && evaluate(at, 40, out.high);
+    return out;
+}
+
+bool seen_different(const point_value& a, const point_value& b) {
+    if (!a.ok || !b.ok || std::getenv("SYMREP_NO_SEEN")) return false;
+    const GiNaC::numeric high = a.high - b.high, low = a.low - b.low;
+    const GiNaC::numeric size = GiNaC::abs(high);
+    static const GiNaC::numeric floor("1e-12");
+    static const GiNaC::numeric agree("1e-10");
+    return size > floor && GiNaC::abs(low - high) <= agree * size;
 }
 
 bool is_nonzero_generic(const GiNaC::ex& x, const std::string& what) {

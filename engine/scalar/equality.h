@@ -46,4 +46,21 @@ std::string witness_text(const zero_decision& d);
 /// as nonzero could give a wrong answer.
 bool is_nonzero_generic(const GiNaC::ex& x, const std::string& what);
 
+/// A quick look before an exact zero test, for the solver's inner loops: the value of
+/// x at one point (every symbol a positive rational in [1.1, 2.9] fixed by its name:
+/// the same point for every expression, consistent with the positivity GiNaC's
+/// simplifications assume) at 20 and at 40 digits. `ok` is false where that is not
+/// a number (a pole, an unevaluated function).
+struct point_value {
+    bool ok = false;
+    GiNaC::numeric low, high;  ///< at 20 and at 40 digits
+};
+point_value value_at_generic_point(const GiNaC::ex& x);
+
+/// True when a - b is seen nonzero at the point: at 40 digits larger than 10^-12
+/// and the same to 10 digits at 20 digits. An identity a = b (anything the exact
+/// zero test proves, radicals taken on any branch) evaluates to rounding noise
+/// there, so a true never contradicts a proof; false says nothing (test exactly).
+bool seen_different(const point_value& a, const point_value& b);
+
 }  // namespace symrep

@@ -225,6 +225,18 @@ GiNaC::ex canonical_radicals(const GiNaC::ex& e) {
     return m(e);
 }
 
+namespace {
+/// A power with a negative or non-numeric exponent anywhere in e.
+bool has_denominator(const GiNaC::ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it)) {
+            const GiNaC::ex& k = it->op(1);
+            if (!GiNaC::is_a<GiNaC::numeric>(k) || GiNaC::ex_to<GiNaC::numeric>(k).is_negative()) return true;
+        }
+    return false;
+}
+}  // namespace
+
 GiNaC::ex tidy(const GiNaC::ex& x) {
     guard_expansion(x, "simplification", false);
     // radicals of rationals in one form: sqrt(12) is 2 sqrt(3), so that it meets sqrt(3)
@@ -232,6 +244,10 @@ GiNaC::ex tidy(const GiNaC::ex& x) {
     const GiNaC::ex e = GiNaC::expand(trig_of_arctangents(r));
     if (has_function_call(e)) return GiNaC::expand(normalize_trig_signs(e));
     guard_expansion(e, "simplification", true);
+    // an expanded polynomial in its atoms (no negative or symbolic power anywhere, roots of
+    // polynomials included) is already in normal form: normal() would only rebuild it
+    // (most of the solver's time went to that on the exponents and coefficients)
+    if (!has_denominator(e)) return e;
     return GiNaC::normal(e);
 }
 
