@@ -90,7 +90,8 @@ void register_output_builtins(registry& r);       // lang/builtins_output.cpp
 void register_check_builtins(registry& r);        // lang/builtins_check.cpp: expect, expect_near
 void register_mechanics_builtins(registry& r);    // lang/builtins_mechanics.cpp: ode, check, eval, verify
 void register_rules_builtins(registry& r);        // lang/builtins_rules.cpp: load_rules, rewrite, rules
-void register_plot_builtins(registry& r);         // lang/builtins_plot.cpp: plot, trajectory, hodograph
+void register_plot_builtins(registry& r);
+void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling         // lang/builtins_plot.cpp: plot, trajectory, hodograph
 
 /// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).
 value solve_problem(const value& p);

@@ -1,0 +1,110 @@
+// symrep/lang/builtins_signals.cpp -- signals represented by algebra elements
+// (thesis II.1-II.3): Psi and Psi^-1, the least equation of a quasi-polynomial,
+// discrete signals and sampling (signals/representation.h).
+#include <string>
+#include <vector>
+
+#include "algebra/polynomial_algebra.h"
+#include "lang/builtins.h"
+#include "signals/representation.h"
+
+namespace symrep::lang {
+
+namespace {
+
+const char* const section = "Signals (II.2-II.3)";
+
+// The representation of w's algebra: with the operator d given (argument i), or the
+// generator v of a polynomial algebra.
+signals::representation representation_of(const std::vector<value>& a, std::size_t i, const algebra_ptr& A,
+                                          const builtin& b) {
+    if (a.size() > i) {
+        const element& d = arg_element(a, i, b);
+        if (d.parent_ptr() != A && d.parent().name() != A->name())
+            throw type_error(b.name + ": the operator d is in " + d.parent().name() + ", the element in " +
+                             A->name());
+        return signals::represent_on(d.parent_ptr(), d.coefficients());
+    }
+    const auto P = std::dynamic_pointer_cast<const polynomial_algebra>(A);
+    if (!P)
+        throw type_error(b.name + ": " + A->name() +
+                         " is not a polynomial algebra; give the operator d (usage: " + b.signature + ")");
+    return signals::polynomial_representation(P->polynomial(), GiNaC::ex_to<GiNaC::symbol>(P->variable()));
+}
+
+}  // namespace
+
+void register_signals_builtins(registry& r) {
+    add_builtin(
+        r, section, "represent", "represent(f, t [, d])",
+        "Psi(f): the element representing the signal f(t). Without d: f is a quasi-polynomial (sums and "
+        "products of t^k, exp(a t), cos(b t), sin(b t), cosh, sinh; parameters real) and the element lives in "
+        "the smallest polynomial algebra P_n = R[X]/(p) that holds it (p = annihilator(f, t, X)), with "
+        "d = v. With d: on d's algebra, where f must solve q(D) f = 0 for q the minimal polynomial of d. "
+        "Psi(f') = d Psi(f); Psi^-1(w) = lambda(w exp(d t)), lambda the last coordinate in the power basis of d.",
+        "Thm II.1.1, Thm II.2.3", "represent(t*exp(-t), t)", 2, 3,
+        [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
+            const GiNaC::ex& f = arg_ex(a, 0, b);
+            const GiNaC::symbol& t = arg_symbol(a, 1, b);
+            if (a.size() == 3) {
+                const element& d = arg_element(a, 2, b);
+                const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
+                return element(d.parent_ptr(), signals::element_of(R, f, t));
+            }
+            const GiNaC::ex X = ctx.symbol("X");
+            const GiNaC::ex p = signals::annihilator(f, t, GiNaC::ex_to<GiNaC::symbol>(X));
+            const auto R = signals::polynomial_representation(p, GiNaC::ex_to<GiNaC::symbol>(X));
+            return element(R.A, signals::element_of(R, f, t));
+        });
+    add_builtin(
+        r, section, "signal", "signal(w, t [, d])",
+        "Psi^-1(w): the signal lambda(w exp(d t)) represented by the element w, with the operator d (default: "
+        "the generator v of a polynomial algebra). signal(d*w, t) = diff(signal(w, t), t).",
+        "Thm II.1.1, Thm II.2.3", "signal(represent(t*exp(-t), t), t)", 2, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const element& w = arg_element(a, 0, b);
+            const GiNaC::symbol& t = arg_symbol(a, 1, b);
+            const auto R = representation_of(a, 2, w.parent_ptr(), b);
+            return signals::signal_of(R, w.coefficients(), t);
+        });
+    add_builtin(
+        r, section, "annihilator", "annihilator(f, t, X)",
+        "The monic real polynomial p(X) of least degree with p(D) f = 0, for a quasi-polynomial f in t: each "
+        "exponent a + I b of f with highest power t^k gives ((X - a)^2 + b^2)^(k+1) ((X - a)^(k+1) for b = 0).",
+        "Thm II.1.1", "annihilator(t*cos(2*t) + exp(-t), t, X)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return signals::annihilator(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_symbol(a, 2, b));
+        });
+    add_builtin(
+        r, section, "sequence", "sequence(w, k0, count [, d])",
+        "The discrete signal represented by w with the shift as multiplication by d (default: the generator "
+        "v of a polynomial algebra): [lambda(w d^k) for k = k0 .. k0 + count - 1]. Negative k need d "
+        "invertible.",
+        "Thm II.3.1-II.3.3", "sequence(find_generator(polynomial_algebra(X^2 - X - 1, X)), 0, 10)", 3, 4,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const element& w = arg_element(a, 0, b);
+            const long k0 = arg_int(a, 1, b, -100000, 100000);
+            const long count = arg_int(a, 2, b, 0, 10000);
+            const auto R = representation_of(a, 3, w.parent_ptr(), b);
+            const auto v = signals::sequence_of(R, w.coefficients(), k0, static_cast<std::size_t>(count));
+            return list(v.begin(), v.end());
+        });
+    add_builtin(
+        r, section, "sampling", "sampling(d, h, l)",
+        "Sampling with step h of the signals represented with the operator d (an element of the algebra; for "
+        "a polynomial algebra its generator v): [exp(h d), q(l), report]. The samples f(k h) of the signal "
+        "Psi^-1(w) are the discrete signal of the same w with the shift exp(h d); q(l) = det(l I - exp(h [d])) "
+        "is their characteristic polynomial. The report says whether the samples alias (two roots r, s of p "
+        "with e^(h r) = e^(h s): they then span fewer dimensions than q's degree).",
+        "Thm II.3.4, Cor. II.3.5 (II.3.26-32)", "sampling(find_generator(polynomial_algebra(X^2 + Pi^2, X)), 1, l)",
+        3, 3, [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const element& d = arg_element(a, 0, b);
+            const GiNaC::ex& h = arg_ex(a, 1, b);
+            const GiNaC::symbol& l = arg_symbol(a, 2, b);
+            const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
+            const auto s = signals::sample(R, h, l);
+            return list{value(element(d.parent_ptr(), s.shift)), value(s.q), value(s.report)};
+        });
+}
+
+}  // namespace symrep::lang

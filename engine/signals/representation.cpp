@@ -1,0 +1,438 @@
+// symrep/signals/representation.cpp -- see representation.h.
+#include "signals/representation.h"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "algebra/exact_linear.h"
+#include "algebra/polynomial_algebra.h"
+#include "core/error.h"
+#include "scalar/equality.h"
+#include "scalar/scalar.h"
+
+namespace symrep::signals {
+
+using GiNaC::ex;
+
+namespace {
+
+std::string text(const ex& e) { return message_text(e, 300); }
+
+// lambda(x) = (K^-1 x)[n-1], K the matrix of the powers 1, d, ..., d^(n-1) (columns):
+// the row with K^T lambda = e_(n-1).
+coeffs power_basis_functional(const algebra& A, const coeffs& d) {
+    const std::size_t n = A.dim();
+    std::vector<coeffs> powers{A.unit()};
+    for (std::size_t j = 1; j < n; ++j) powers.push_back(A.multiply(powers.back(), d));
+    std::vector<std::vector<ex>> KT(n, std::vector<ex>(n));
+    for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t i = 0; i < n; ++i) KT[j][i] = powers[j][i];
+    std::vector<ex> e(n, ex(0));
+    e[n - 1] = 1;
+    const auto l = solve_linear(KT, e);
+    if (!l) throw algebra_error("signals: the powers of d are not a basis of " + A.name());
+    return coeffs(l->begin(), l->end());
+}
+
+ex functional(const coeffs& lambda, const coeffs& x) {
+    ex s = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) s += lambda[i] * x[i];
+    return s;
+}
+
+}  // namespace
+
+// (Thm II.1.1, Cor. II.1.1)
+representation represent_on(algebra_ptr A, const coeffs& d) {
+    A->check_size(d, "representation");
+    representation R;
+    R.A = A;
+    R.d = d;
+    R.p = A->minpoly(d, R.X);
+    const int deg = R.p.degree(R.X);
+    if (deg != int(A->dim()))
+        throw algebra_error("signals: d does not generate " + A->name() + ": its minimal polynomial " +
+                            text(R.p) + " has degree " + std::to_string(deg) + " < " +
+                            std::to_string(A->dim()) +
+                            ", so the signals it represents satisfy an equation of that lower order "
+                            "(Cor. II.1.1) and Psi is not one-to-one");
+    R.lambda = power_basis_functional(*A, d);
+    return R;
+}
+
+representation polynomial_representation(const ex& p, const GiNaC::symbol& X) {
+    const auto P = polynomial_algebra::make(p, X);
+    representation R;
+    R.A = P;
+    R.d = P->generator();
+    R.p = p.subs(X == R.X);
+    R.lambda = coeffs(P->dim(), ex(0));
+    R.lambda.back() = 1;  // the power basis is the basis: lambda = the coordinate of v^(n-1)
+    return R;
+}
+
+// Psi^-1(w) = lambda(w exp(d t))
+ex signal_of(const representation& R, const coeffs& w, const ex& t) {
+    R.A->check_size(w, "signal");
+    const coeffs e = R.A->exp(R.d, t);
+    return tidy(functional(R.lambda, R.A->multiply(w, e)));
+}
+
+// Psi(f): lambda(w d^k) = f^(k)(0), k < n, after p(D) f = 0 is proved.
+coeffs element_of(const representation& R, const ex& f, const GiNaC::symbol& t) {
+    const std::size_t n = R.A->dim();
+    std::vector<ex> derivative{f};
+    for (std::size_t k = 1; k <= n; ++k) derivative.push_back(derivative.back().diff(t));
+    ex residual = 0;
+    const ex p = GiNaC::expand(R.p);
+    for (std::size_t k = 0; k <= n; ++k) residual += p.coeff(R.X, int(k)) * derivative[k];
+    residual = tidy(residual);
+    if (!is_zero_scalar(residual)) {
+        const zero_decision z = decide_zero(residual);
+        if (z.is_zero == truth::no)
+            throw domain_error("signals: " + text(f) + " is not a solution of p(D) f = 0 for p = " + text(R.p) +
+                               " (p(D) f = " + text(residual) + ", not 0 " + witness_text(z) +
+                               "), so it is not represented on " + R.A->name());
+        if (z.is_zero == truth::unknown)
+            throw domain_error("signals: cannot decide whether " + text(f) + " solves p(D) f = 0 for p = " +
+                               text(R.p) + " (p(D) f = " + text(residual) +
+                               " is neither proved 0 nor seen nonzero)");
+    }
+    std::vector<coeffs> dk{R.A->unit()};
+    for (std::size_t k = 1; k < n; ++k) dk.push_back(R.A->multiply(dk.back(), R.d));
+    std::vector<std::vector<ex>> M(n, std::vector<ex>(n));
+    std::vector<ex> b(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t j = 0; j < n; ++j) M[k][j] = functional(R.lambda, R.A->multiply(R.A->basis_vector(j), dk[k]));
+        b[k] = tidy(derivative[k].subs(t == 0));
+    }
+    const auto w = solve_linear(M, b);
+    if (!w) throw algebra_error("signals: the form lambda(x y) is degenerate on " + R.A->name());
+    coeffs out;
+    for (const ex& x : *w) out.push_back(tidy(x));
+    return out;
+}
+
+namespace {
+
+// f with cos, sin, cosh, sinh written as exponentials.
+ex exponential_form(const ex& f) {
+    struct rewrite : GiNaC::map_function {
+        ex operator()(const ex& x) override {
+            const ex y = x.map(*this);
+            if (GiNaC::is_a<GiNaC::function>(y)) {
+                const std::string name = GiNaC::ex_to<GiNaC::function>(y).get_name();
+                const ex u = y.op(0);
+                if (name == "cos") return (GiNaC::exp(GiNaC::I * u) + GiNaC::exp(-GiNaC::I * u)) / 2;
+                if (name == "sin") return (GiNaC::exp(GiNaC::I * u) - GiNaC::exp(-GiNaC::I * u)) / (2 * GiNaC::I);
+                if (name == "cosh") return (GiNaC::exp(u) + GiNaC::exp(-u)) / 2;
+                if (name == "sinh") return (GiNaC::exp(u) - GiNaC::exp(-u)) / 2;
+            }
+            return y;
+        }
+    } r;
+    return r(f);
+}
+
+bool is_exp(const ex& x) {
+    return GiNaC::is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "exp";
+}
+
+[[noreturn]] void not_quasi_polynomial(const ex& f, const ex& part, const GiNaC::symbol& t) {
+    throw domain_error("signals: " + text(f) + " is not a quasi-polynomial in " + t.get_name() + ": its part " +
+                       text(part) + " is not c " + t.get_name() + "^k exp(a " + t.get_name() + ") cos(b " +
+                       t.get_name() + ") / sin(b " + t.get_name() + ") with a, b, c free of " + t.get_name());
+}
+
+// One term c t^k e^(lambda t) of the expanded exponential form: (c, k, lambda).
+struct monomial {
+    ex c;
+    unsigned k;
+    ex lambda;
+};
+
+monomial read_term(const ex& f, const ex& term, const GiNaC::symbol& t) {
+    monomial m{1, 0, 0};
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++i) {
+        const ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(i) : term;
+        if (!x.has(t)) {
+            m.c *= x;
+        } else if (x.is_equal(t)) {
+            m.k += 1;
+        } else if (GiNaC::is_a<GiNaC::power>(x) && x.op(0).is_equal(t) && x.op(1).info(GiNaC::info_flags::posint)) {
+            m.k += GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int();
+        } else if (is_exp(x) || (GiNaC::is_a<GiNaC::power>(x) && is_exp(x.op(0)) &&
+                                 x.op(1).info(GiNaC::info_flags::integer))) {
+            const ex u = GiNaC::expand(is_exp(x) ? x.op(0) : x.op(0).op(0) * x.op(1));
+            if (!u.is_polynomial(t) || u.degree(t) > 1) not_quasi_polynomial(f, x, t);
+            const ex a = u.coeff(t, 1), rest = u.coeff(t, 0);
+            if (a.has(t) || rest.has(t)) not_quasi_polynomial(f, x, t);
+            m.lambda += a;
+            m.c *= GiNaC::exp(rest);
+        } else {
+            not_quasi_polynomial(f, x, t);
+        }
+    }
+    return m;
+}
+
+// (re, im) of an expression whose symbols are real: the numeric factors split.
+std::pair<ex, ex> real_imag(const ex& z) {
+    const ex e = GiNaC::expand(z);
+    ex re = 0, im = 0;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        GiNaC::numeric n = 1;
+        ex rest = 1;
+        for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
+            const ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+            if (GiNaC::is_a<GiNaC::numeric>(x)) n *= GiNaC::ex_to<GiNaC::numeric>(x);
+            else rest *= x;
+        }
+        re += n.real() * rest;
+        im += n.imag() * rest;
+    }
+    return {re, im};
+}
+
+}  // namespace
+
+std::vector<exponent> exponents_of(const ex& f, const GiNaC::symbol& t) {
+    const ex e = GiNaC::expand(exponential_form(f));
+    // (lambda, k) -> coefficient, lambdas compared exactly
+    std::vector<std::pair<ex, std::map<unsigned, ex>>> by_lambda;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const monomial m = read_term(f, GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e, t);
+        const ex lambda = tidy(m.lambda);
+        auto it = by_lambda.begin();
+        for (; it != by_lambda.end(); ++it)
+            if (is_zero_scalar(tidy(it->first - lambda))) break;
+        if (it == by_lambda.end()) {
+            by_lambda.push_back({lambda, {}});
+            it = by_lambda.end() - 1;
+        }
+        it->second[m.k] += m.c;
+    }
+    std::vector<exponent> out;
+    for (const auto& [lambda, powers] : by_lambda) {
+        unsigned top = 0;
+        bool any = false;
+        for (const auto& [k, c] : powers)
+            if (!is_zero_scalar(tidy(c))) {  // not proved 0: kept (an annihilator, maybe not the least)
+                top = k;
+                any = true;
+            }
+        if (any) out.push_back({lambda, top + 1});
+    }
+    return out;
+}
+
+// ((X - a)^2 + b^2)^m for each conjugate pair, (X - a)^m for a real lambda.
+ex annihilator(const ex& f, const GiNaC::symbol& t, const GiNaC::symbol& X) {
+    const std::vector<exponent> es = exponents_of(f, t);
+    if (es.empty())
+        throw domain_error("signals: " + text(f) + " is 0, which every algebra represents by 0; no least "
+                           "equation of positive order");
+    std::vector<bool> used(es.size(), false);
+    ex q = 1;
+    for (std::size_t i = 0; i < es.size(); ++i) {
+        if (used[i]) continue;
+        used[i] = true;
+        const auto [a, b] = real_imag(es[i].lambda);
+        unsigned m = es[i].multiplicity;
+        if (is_zero_scalar(tidy(b))) {
+            q *= GiNaC::pow(X - a, m);
+            continue;
+        }
+        for (std::size_t j = i + 1; j < es.size(); ++j) {  // the conjugate a - I b
+            if (used[j]) continue;
+            if (is_zero_scalar(tidy(es[j].lambda - (a - GiNaC::I * b)))) {
+                used[j] = true;
+                m = std::max(m, es[j].multiplicity);
+            }
+        }
+        q *= GiNaC::pow(GiNaC::pow(X - a, 2) + GiNaC::pow(b, 2), m);
+    }
+    return GiNaC::expand(q);
+}
+
+std::vector<ex> sequence_of(const representation& R, const coeffs& w, long first, std::size_t count) {
+    R.A->check_size(w, "sequence");
+    coeffs step = R.d;
+    long start = first;
+    if (first < 0) step = R.A->inverse(R.d);  // zero_divisor_error when d is not invertible
+    coeffs at = R.A->power(step, static_cast<unsigned long>(first < 0 ? -first : first));
+    std::vector<ex> out;
+    for (std::size_t i = 0; i < count; ++i) {
+        out.push_back(tidy(functional(R.lambda, R.A->multiply(w, at))));
+        ++start;
+        at = start <= 0 ? R.A->power(step, static_cast<unsigned long>(-start)) : R.A->multiply(at, R.d);
+        if (start == 0) at = R.A->unit();
+    }
+    return out;
+}
+
+namespace {
+
+std::vector<ex> symbols_in(const ex& x) {
+    std::vector<ex> out;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) out.push_back(*it);
+    return out;
+}
+
+// x at 40 digits (false when that is not a number).
+bool numeric_value(const ex& x, GiNaC::numeric& out) {
+    const long saved = GiNaC::Digits;
+    GiNaC::Digits = 40;
+    try {
+        const ex v = GiNaC::evalf(x);
+        GiNaC::Digits = saved;
+        if (!GiNaC::is_a<GiNaC::numeric>(v)) return false;
+        out = GiNaC::ex_to<GiNaC::numeric>(v);
+        if (!out.is_real() && GiNaC::abs(out.imag()) < GiNaC::numeric(1, 1000000000) * GiNaC::abs(out))
+            out = out.real();  // rounding in the imaginary part of a real constant
+        return true;
+    } catch (const std::bad_alloc&) {
+        GiNaC::Digits = saved;
+        throw;
+    } catch (const std::exception&) {
+        GiNaC::Digits = saved;
+        return false;
+    }
+}
+
+// GiNaC's factor() works over the rationals: pi, Euler and Catalan go in as symbols.
+ex factor_with_constants(const ex& x) {
+    GiNaC::exmap to, back;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::constant>(*it) && !to.count(*it)) {
+            const GiNaC::symbol s;
+            to[*it] = s;
+            back[s] = *it;
+        }
+    return GiNaC::factor(x.subs(to, GiNaC::subs_options::no_pattern)).subs(back, GiNaC::subs_options::no_pattern);
+}
+
+// sqrt(x) with the square factors of x that are positive (numbers, Pi, positive
+// symbols) taken out: sqrt(-4 Pi^2) = 2 I Pi (GiNaC leaves sqrt(Pi^2) as it is).
+ex square_root(const ex& x) {
+    const ex f = factor_with_constants(GiNaC::normal(x));
+    ex out = 1, in = 1;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(f) ? f.nops() : 1); ++i) {
+        const ex g = GiNaC::is_a<GiNaC::mul>(f) ? f.op(i) : f;
+        if (GiNaC::is_a<GiNaC::numeric>(g)) {
+            out *= GiNaC::sqrt(g);  // exact: sqrt(-4) = 2 I, sqrt(8) = 2 sqrt(2)
+        } else if (GiNaC::is_a<GiNaC::power>(g) &&
+                   (g.op(0).info(GiNaC::info_flags::positive) || GiNaC::is_a<GiNaC::constant>(g.op(0))) &&
+                   g.op(1).info(GiNaC::info_flags::even)) {  // (Pi, Euler and Catalan are positive)
+            out *= GiNaC::pow(g.op(0), g.op(1) / 2);
+        } else {
+            in *= g;
+        }
+    }
+    return out * GiNaC::sqrt(in);
+}
+
+// The roots of p that its rational factorization gives in radicals (factors of degree
+// 1, 2); false when a factor of higher degree has roots not found.
+bool known_roots(const ex& p, const GiNaC::symbol& X, std::vector<ex>& roots) {
+    bool all = true;
+    const ex f = factor_with_constants(p);
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(f) ? f.nops() : 1); ++i) {
+        ex g = GiNaC::is_a<GiNaC::mul>(f) ? f.op(i) : f;
+        if (GiNaC::is_a<GiNaC::power>(g)) g = g.op(0);
+        if (!g.has(X)) continue;
+        const ex e = GiNaC::expand(g);
+        const int deg = e.degree(X);
+        if (deg == 1) {
+            roots.push_back(tidy(-e.coeff(X, 0) / e.coeff(X, 1)));
+        } else if (deg == 2) {
+            const ex a = e.coeff(X, 2), b = e.coeff(X, 1), c = e.coeff(X, 0);
+            const ex r = square_root(b * b - 4 * a * c);
+            roots.push_back(tidy((-b + r) / (2 * a)));
+            roots.push_back(tidy((-b - r) / (2 * a)));
+        } else {
+            all = false;
+        }
+    }
+    return all;
+}
+
+}  // namespace
+
+// (Thm II.3.4, II.3.26, Cor. II.3.5)
+sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
+    if (is_zero_scalar(h)) throw domain_error("sampling: the step h is 0");
+    sampling s;
+    s.shift = R.A->exp(R.d, h);
+    for (auto& x : s.shift) x = tidy(x);
+    s.q = R.A->charpoly(s.shift, l);
+    std::vector<ex> r;
+    const bool all = known_roots(R.p, R.X, r);
+    // h (r - s) / (2 pi i) for each pair of distinct roots: a nonzero integer is aliasing
+    std::vector<std::string> met, conditions;
+    bool undecided = false;
+    for (std::size_t i = 0; i < r.size(); ++i)
+        for (std::size_t j = i + 1; j < r.size(); ++j) {
+            if (is_zero_scalar(tidy(r[i] - r[j]))) continue;  // a repeated root
+            const ex z = tidy(h * (r[i] - r[j]) / (2 * GiNaC::Pi * GiNaC::I));
+            const std::string pair = text(r[i]) + " and " + text(r[j]);
+            if (GiNaC::is_a<GiNaC::numeric>(z)) {
+                if (GiNaC::ex_to<GiNaC::numeric>(z).is_integer()) met.push_back(pair);
+            } else if (symbols_in(z).empty()) {  // a constant: the nearest integer, then exactly
+                GiNaC::numeric v;
+                if (!numeric_value(z, v)) {
+                    undecided = true;
+                    continue;
+                }
+                if (!v.is_real()) continue;  // a real part: |e^(h r)| != |e^(h s)|
+                const double vd = v.to_double();
+                if (!(std::abs(vd) < 1e12)) {
+                    undecided = true;
+                    continue;
+                }
+                const GiNaC::numeric m(static_cast<long>(std::llround(vd)));  // the nearest integer
+                if (GiNaC::abs(v - m) > GiNaC::numeric(1, 1000000)) continue;  // not an integer
+                if (!m.is_zero() && is_zero_scalar(tidy(z - m))) met.push_back(pair);
+                else undecided = true;
+            } else if (!z.has(GiNaC::I) && !h.info(GiNaC::info_flags::numeric)) {
+                conditions.push_back(pair + " when " + text(z) + " is a nonzero integer");
+            } else if (!z.info(GiNaC::info_flags::numeric)) {
+                // a numeric step with a symbolic difference of roots: decided only where the
+                // real part of h (r - s) is seen nonzero
+                const auto [re, im] = real_imag(z);
+                const zero_decision d = decide_zero(tidy(im));
+                if (d.is_zero == truth::no) continue;  // |e^(h r)| != |e^(h s)|
+                if (d.is_zero == truth::unknown) undecided = true;
+                else conditions.push_back(pair + " when " + text(re) + " is a nonzero integer");
+            }
+        }
+    std::ostringstream os;
+    const int n = int(R.A->dim());
+    if (!met.empty()) {
+        s.aliasing = truth::yes;
+        os << "aliasing at step " << text(h) << ": the roots ";
+        for (std::size_t i = 0; i < met.size(); ++i) os << (i ? "; " : "") << met[i];
+        os << " of p sample to the same e^(h r), so the samples span fewer than "
+           << n << " dimensions";
+    } else if (!all || undecided) {
+        s.aliasing = truth::unknown;
+        os << "aliasing at step " << text(h) << " not decided: "
+           << (!all ? "p has a rational factor of degree > 2 whose roots are not found"
+                    : "whether two roots sample to the same e^(h r) is neither proved nor disproved");
+    } else if (!conditions.empty()) {
+        s.aliasing = truth::no;
+        os << "no aliasing for a generic step " << text(h) << "; aliasing exactly for the roots ";
+        for (std::size_t i = 0; i < conditions.size(); ++i) os << (i ? "; " : "") << conditions[i];
+    } else {
+        s.aliasing = truth::no;
+        os << "no aliasing at step " << text(h) << ": the " << n
+           << " dimensions of the solution space stay " << n << " in the samples";
+    }
+    s.report = os.str();
+    return s;
+}
+
+}  // namespace symrep::signals
