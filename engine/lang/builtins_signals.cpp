@@ -7,6 +7,7 @@
 #include "algebra/polynomial_algebra.h"
 #include "lang/builtins.h"
 #include "signals/representation.h"
+#include "signals/response.h"
 
 namespace symrep::lang {
 
@@ -104,6 +105,37 @@ void register_signals_builtins(registry& r) {
             const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
             const auto s = signals::sample(R, h, l);
             return list{value(element(d.parent_ptr(), s.shift)), value(s.q), value(s.report)};
+        });
+    add_builtin(
+        r, section, "transmittance", "transmittance(a, b, d)",
+        "H(d) = q(d)/p(d) of the system a_0 x^(m) + ... + a_m x = b_0 f^(p) + ... + b_p f (a, b: the lists "
+        "a_0 .. a_m, b_0 .. b_p), on d's algebra. Refused (zero divisor) where p(d) is not invertible: a root of "
+        "p is an eigenvalue of d, and an input on that mode resonates.",
+        "(IV.3.7-15)", "transmittance([1, 3, 2], [1], find_generator(polynomial_algebra(X^2 + 1, X)))", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const std::vector<GiNaC::ex> as = arg_ex_list(a, 0, b), bs = arg_ex_list(a, 1, b);
+            const element& d = arg_element(a, 2, b);
+            if (as.empty() || bs.empty())
+                throw type_error(b.name + ": the lists a and b must not be empty (usage: " + b.signature + ")");
+            return element(d.parent_ptr(), signals::transmittance(d.parent(), d.coefficients(), as, bs));
+        });
+    add_builtin(
+        r, section, "response", "response(a, b, f, t)",
+        "The response of a_0 x^(m) + ... + a_m x = b_0 f^(p) + ... + b_p f (m > p) to the quasi-polynomial input "
+        "f(t): [particular, zero_state, report]. particular = Psi^-1[H(d) Psi(f)] in the input's class (d = v on "
+        "the input's least algebra); zero_state has x(0) = ... = x^(m-1)(0) = 0 and lives on the algebra of "
+        "p r (Thm IV.3.2.1). The report names the case: passed, partially filtered, filtered out (q vanishes on the "
+        "input's modes) or resonant (p shares a mode with the input that q does not cancel: secular terms; then "
+        "particular is the zero-state response). Both are substituted into the system before they are returned. "
+        "Where the roots of p r cannot be told real or complex (a symbolic discriminant), zero_state is \"not "
+        "derived\" and the report says why.",
+        "(IV.3.7-17), Thm IV.3.2.1", "response([1, 0, 1], [1], cos(t), t)", 4, 4,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const std::vector<GiNaC::ex> as = arg_ex_list(a, 0, b), bs = arg_ex_list(a, 1, b);
+            const auto x = signals::respond(as, bs, arg_ex(a, 2, b), arg_symbol(a, 3, b));
+            return list{value(x.particular),
+                        x.has_zero_state ? value(x.zero_state) : value(std::string("not derived")),
+                        value(x.report)};
         });
 }
 

@@ -43,6 +43,30 @@ ex functional(const coeffs& lambda, const coeffs& x) {
 
 }  // namespace
 
+std::string polynomial_text(const ex& p, const GiNaC::symbol& X) {
+    const ex e = GiNaC::expand(p);
+    if (!e.is_polynomial(X)) return text(e);
+    std::string out;
+    for (int k = e.degree(X); k >= 0; --k) {
+        const ex c = e.coeff(X, k);
+        if (c.is_zero()) continue;
+        std::string mono = k == 0 ? "" : k == 1 ? X.get_name() : X.get_name() + "^" + std::to_string(k);
+        std::string coef = text(c);
+        bool negative = false;
+        if (GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_real() &&
+            GiNaC::ex_to<GiNaC::numeric>(c) < 0) {
+            negative = true;
+            coef = text(-c);
+        } else if (GiNaC::is_a<GiNaC::add>(c)) {
+            coef = "(" + coef + ")";
+        }
+        std::string term = mono.empty() ? coef : coef == "1" ? mono : coef + "*" + mono;
+        if (out.empty()) out = negative ? "-" + term : term;
+        else out += (negative ? " - " : " + ") + term;
+    }
+    return out.empty() ? "0" : out;
+}
+
 // (Thm II.1.1, Cor. II.1.1)
 representation represent_on(algebra_ptr A, const coeffs& d) {
     A->check_size(d, "representation");
@@ -53,7 +77,7 @@ representation represent_on(algebra_ptr A, const coeffs& d) {
     const int deg = R.p.degree(R.X);
     if (deg != int(A->dim()))
         throw algebra_error("signals: d does not generate " + A->name() + ": its minimal polynomial " +
-                            text(R.p) + " has degree " + std::to_string(deg) + " < " +
+                            polynomial_text(R.p, R.X) + " has degree " + std::to_string(deg) + " < " +
                             std::to_string(A->dim()) +
                             ", so the signals it represents satisfy an equation of that lower order "
                             "(Cor. II.1.1) and Psi is not one-to-one");
@@ -91,12 +115,12 @@ coeffs element_of(const representation& R, const ex& f, const GiNaC::symbol& t) 
     if (!is_zero_scalar(residual)) {
         const zero_decision z = decide_zero(residual);
         if (z.is_zero == truth::no)
-            throw domain_error("signals: " + text(f) + " is not a solution of p(D) f = 0 for p = " + text(R.p) +
+            throw domain_error("signals: " + text(f) + " is not a solution of p(D) f = 0 for p = " + polynomial_text(R.p, R.X) +
                                " (p(D) f = " + text(residual) + ", not 0 " + witness_text(z) +
                                "), so it is not represented on " + R.A->name());
         if (z.is_zero == truth::unknown)
             throw domain_error("signals: cannot decide whether " + text(f) + " solves p(D) f = 0 for p = " +
-                               text(R.p) + " (p(D) f = " + text(residual) +
+                               polynomial_text(R.p, R.X) + " (p(D) f = " + text(residual) +
                                " is neither proved 0 nor seen nonzero)");
     }
     std::vector<coeffs> dk{R.A->unit()};
@@ -232,7 +256,7 @@ std::vector<exponent> exponents_of(const ex& f, const GiNaC::symbol& t) {
 ex annihilator(const ex& f, const GiNaC::symbol& t, const GiNaC::symbol& X) {
     const std::vector<exponent> es = exponents_of(f, t);
     if (es.empty())
-        throw domain_error("signals: " + text(f) + " is 0, which every algebra represents by 0; no least "
+        throw domain_error("signals: the signal is 0, which every algebra represents by 0; no least "
                            "equation of positive order");
     std::vector<bool> used(es.size(), false);
     ex q = 1;

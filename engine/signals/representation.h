@@ -76,6 +76,10 @@ struct exponent {
     GiNaC::ex lambda;  ///< a + I b
     unsigned multiplicity;
 };
+/// A polynomial in X as text for messages, by descending powers ("X^2 + 4*X + 1"):
+/// the same text whatever order GiNaC keeps the terms in.
+std::string polynomial_text(const GiNaC::ex& p, const GiNaC::symbol& X);
+
 std::vector<exponent> exponents_of(const GiNaC::ex& f, const GiNaC::symbol& t);
 
 /// Psi^-1_d(w)(k) = lambda(w d^k) for k = first .. first + count - 1 (Thm II.3.3; the

@@ -1,0 +1,207 @@
+// symrep/signals/response.cpp -- see response.h.
+#include "signals/response.h"
+
+#include "core/error.h"
+#include "scalar/equality.h"
+#include "scalar/scalar.h"
+#include "signals/representation.h"
+
+namespace symrep::signals {
+
+using GiNaC::ex;
+
+namespace {
+
+std::string text(const ex& e) { return message_text(e, 300); }
+
+// The matrix of multiplication by u (columns: u e_j).
+GiNaC::matrix multiplication_matrix(const algebra& A, const coeffs& u) {
+    const std::size_t n = A.dim();
+    GiNaC::matrix M{static_cast<unsigned>(n), static_cast<unsigned>(n)};
+    for (std::size_t j = 0; j < n; ++j) {
+        const coeffs c = A.multiply(u, A.basis_vector(j));
+        for (std::size_t i = 0; i < n; ++i) M(unsigned(i), unsigned(j)) = c[i];
+    }
+    return M;
+}
+
+// A solution of M x = y (rows >= columns), free unknowns 0; false when inconsistent.
+bool solve_any(const GiNaC::matrix& M, const std::vector<ex>& y, coeffs& x) {
+    const unsigned n = M.cols();
+    GiNaC::matrix vars(n, 1), rhs(M.rows(), 1);
+    std::vector<GiNaC::symbol> unknowns(n);
+    for (unsigned j = 0; j < n; ++j) vars(j, 0) = unknowns[j];
+    for (unsigned i = 0; i < M.rows(); ++i) rhs(i, 0) = y[i];
+    GiNaC::matrix s;
+    try {
+        s = M.solve(vars, rhs, GiNaC::solve_algo::gauss);
+    } catch (const std::runtime_error&) {
+        return false;  // "inconsistent linear system"
+    }
+    GiNaC::exmap free;
+    for (unsigned j = 0; j < n; ++j) free[unknowns[j]] = 0;
+    x.assign(n, ex(0));
+    for (unsigned j = 0; j < n; ++j) x[j] = tidy(s(j, 0).subs(free));
+    return true;
+}
+
+// sum c_k D^k applied to x(t), c from the polynomial in l.
+ex apply_operator(const ex& poly, const GiNaC::symbol& l, const ex& x, const GiNaC::symbol& t) {
+    const ex P = GiNaC::expand(poly);
+    ex out = 0, dx = x;
+    for (int k = 0; k <= P.degree(l); ++k) {
+        out += P.coeff(l, k) * dx;
+        dx = dx.diff(t);
+    }
+    return out;
+}
+
+}  // namespace
+
+ex system_polynomial(const std::vector<ex>& a, const GiNaC::symbol& l) {
+    ex p = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) p += a[k] * GiNaC::pow(l, int(a.size() - 1 - k));
+    return p;
+}
+
+// (IV.3.15)
+coeffs transmittance(const algebra& A, const coeffs& d, const std::vector<ex>& a, const std::vector<ex>& b) {
+    const GiNaC::symbol l;
+    const coeffs pd = A.evaluate_polynomial(system_polynomial(a, l), l, d);
+    const coeffs qd = A.evaluate_polynomial(system_polynomial(b, l), l, d);
+    if (A.is_zero_divisor(pd))
+        throw zero_divisor_error("transmittance: p(d) is a zero divisor in " + A.name() +
+                                     " (a root of p is an eigenvalue of d: case e of IV.3.2), so H(d) = q(d)/p(d) "
+                                     "does not exist; an input with a component on that mode is resonant",
+                                 {});
+    return A.multiply(qd, A.inverse(pd));
+}
+
+system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t) {
+    if (a.empty() || is_zero_scalar(a[0]))
+        throw domain_error("response: the leading coefficient a_0 of the system is 0");
+    if (b.empty()) throw domain_error("response: the input side b_0 .. b_p is empty");
+    const std::size_t m = a.size() - 1;
+    if (m < 1 || b.size() - 1 >= m)
+        throw domain_error("response: the system needs order m > p (IV.3.7): m = " + std::to_string(m) +
+                           ", p = " + std::to_string(b.size() - 1));
+    for (const ex& c : a)
+        if (c.has(t)) throw domain_error("response: a coefficient a_k depends on " + t.get_name());
+    for (const ex& c : b)
+        if (c.has(t)) throw domain_error("response: a coefficient b_k depends on " + t.get_name());
+    system_response out;
+    const GiNaC::symbol X("X");
+    const ex r = annihilator(f, t, X);
+    out.input_equation = r;
+    const ex P = system_polynomial(a, X), Q = system_polynomial(b, X);
+
+    // the input's class: A = P_r, d = v (IV.3.10-16)
+    const representation R = polynomial_representation(r, X);
+    const algebra& A = *R.A;
+    const coeffs w = element_of(R, f, t);
+    const coeffs pd = A.evaluate_polynomial(P.subs(X == R.X), R.X, R.d);
+    const coeffs qd = A.evaluate_polynomial(Q.subs(X == R.X), R.X, R.d);
+    const coeffs y = A.multiply(qd, w);
+    const bool zero_divisor = A.is_zero_divisor(pd);
+    coeffs xw;
+    const std::vector<ex> yv(y.begin(), y.end());
+    const bool solvable = solve_any(multiplication_matrix(A, pd), yv, xw);
+
+    // the zero-state response on P_Pi, Pi = p r (Thm IV.3.2.1): p(v) x = q(v) F and
+    // lambda(x v^k) = x^(k)(0) = 0, k < m
+    std::string zero_state_refused;
+    try {
+        const ex Pi = GiNaC::expand(P * r / a[0]);
+        const representation B = polynomial_representation(Pi, X);
+        const std::size_t N = B.A->dim();
+        const coeffs F = element_of(B, f, t);
+        const GiNaC::matrix PM = multiplication_matrix(*B.A, B.A->evaluate_polynomial(P.subs(X == B.X), B.X, B.d));
+        const coeffs QF = B.A->multiply(B.A->evaluate_polynomial(Q.subs(X == B.X), B.X, B.d), F);
+        GiNaC::matrix M{static_cast<unsigned>(N + m), static_cast<unsigned>(N)};
+        std::vector<ex> rhs(N + m, ex(0));
+        for (unsigned i = 0; i < N; ++i) {
+            for (unsigned j = 0; j < N; ++j) M(i, j) = PM(i, j);
+            rhs[i] = QF[i];
+        }
+        coeffs vk = B.A->unit();
+        for (std::size_t k = 0; k < m; ++k) {  // lambda(e_j v^k)
+            for (unsigned j = 0; j < N; ++j)
+                M(unsigned(N + k), j) = B.A->multiply(B.A->basis_vector(j), vk).back();
+            vk = B.A->multiply(vk, B.d);
+        }
+        coeffs xs;
+        if (!solve_any(M, rhs, xs)) throw algebra_error("internal: the zero-state response of the system has no solution");
+        out.zero_state = signal_of(B, xs, t);
+
+
+    } catch (const closed_form_error& e) {  // exp on P_Pi needs the roots of p r (a sign not decided)
+        out.has_zero_state = false;
+        out.zero_state = 0;
+        zero_state_refused = e.what();
+    }
+    if (algebra::equal(y, A.zero())) {
+        out.kind = "filtered out";
+        out.particular = 0;
+        out.report = "filtered out: q(d) Psi(f) = 0 (q vanishes on every mode of the input), so the particular "
+                     "response is 0 (case a of IV.3.2)";
+    } else if (solvable) {
+        out.particular = signal_of(R, xw, t);
+        // the order of the response's least equation: the dimension of the span of x, d x,
+        // d^2 x, ... (the least g with g(d) x = 0). Case b of IV.3.2 prints "the minimal
+        // polynomial of the element", which is not it: the unit has minimal polynomial
+        // X - 1, yet represents the impulse response, of order n.
+        const std::size_t n = A.dim();
+        GiNaC::matrix K{static_cast<unsigned>(n), static_cast<unsigned>(n)};
+        coeffs u = xw;
+        for (std::size_t k = 0; k < n; ++k) {
+            for (std::size_t i = 0; i < n; ++i) K(unsigned(i), unsigned(k)) = u[i];
+            u = A.multiply(u, R.d);
+        }
+        const unsigned order = K.rank();
+        if (order < n) {
+            out.kind = "partially filtered";
+            out.report = "partially filtered: the response satisfies an equation of order " + std::to_string(order) +
+                         " < " + std::to_string(n) + ", the order of the input's (case b of IV.3.2)";
+        } else {
+            out.kind = "passed";
+            out.report = "passed: the response is in the input's class, x = Psi^-1[H(d) Psi(f)] (IV.3.16)";
+        }
+        if (zero_divisor)
+            out.report += "; p(d) is a zero divisor, but the input has no component on the modes p shares "
+                          "with it (no resonance)";
+    } else {
+        out.kind = "resonant";
+        if (!out.has_zero_state)
+            throw domain_error("response: the input resonates with the system, and its response (on the "
+                               "polynomial algebra of p r) is not derived: " + zero_state_refused);
+        out.particular = out.zero_state;
+        const GiNaC::symbol Y;
+        const ex common = GiNaC::gcd(GiNaC::expand(P.subs(X == Y)), GiNaC::expand(r.subs(X == Y)));
+        out.report = "resonant: p and the input's equation share the factor " +
+                     polynomial_text(common.subs(Y == X), X) +
+                     " and q does not cancel it, so no response is in the input's class (case e of IV.3.2); "
+                     "the response has secular terms and lives on the polynomial algebra of p r (Thm IV.3.2.1)";
+    }
+    // every response substituted into the system (IV.3.7)
+    const ex lhs_minus_rhs = [&](const ex& x) {
+        return tidy(apply_operator(P, X, x, t) - apply_operator(Q, X, f, t));
+    }(out.particular);
+    const ex zs = out.has_zero_state ? tidy(apply_operator(P, X, out.zero_state, t) - apply_operator(Q, X, f, t))
+                                     : ex(0);
+    if (!out.has_zero_state) out.report += "; the zero-state response is not derived: " + zero_state_refused;
+    for (const ex& residual : {lhs_minus_rhs, zs}) {
+        if (is_zero_scalar(residual)) continue;
+        const zero_decision z = decide_zero(residual);
+        if (z.is_zero == truth::no)
+            throw algebra_error("internal: a derived response does not satisfy the system (residual " +
+                                text(residual) + ", not 0 " + witness_text(z) + ")");
+        if (z.is_zero == truth::unknown)
+            throw domain_error("response: the derived response is not proved to satisfy the system (the residual " +
+                               text(residual) +
+                               " is neither proved 0 nor seen nonzero; with square roots of squares such as "
+                               "sqrt(w^2), declaring the parameters positive lets the proof through)");
+    }
+    return out;
+}
+
+}  // namespace symrep::signals

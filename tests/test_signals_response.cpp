@@ -1,0 +1,88 @@
+// Tests of signals/response.h (thesis IV.3.1-IV.3.2, Thm IV.3.2.1): the transmittance,
+// the cases of IV.3.2 decided exactly, and agreement of the zero-state response with
+// the constant-coefficient solver of the mechanics layer on the same scalar problems.
+// All comparisons exact (the zero test); no tolerance.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "algebra/polynomial_algebra.h"
+#include "core/error.h"
+#include "lang/interpreter.h"
+#include "scalar/scalar.h"
+#include "signals/representation.h"
+#include "signals/response.h"
+
+using namespace symrep;
+using namespace symrep::signals;
+using GiNaC::ex;
+
+namespace {
+
+const GiNaC::symbol t("t"), X("X");
+
+bool same(const ex& a, const ex& b) { return is_zero_scalar(tidy(GiNaC::expand(a - b))); }
+
+// The mechanics solver's answer to `problem` (a scalar Cauchy problem in the language).
+ex solver(const std::string& problem) {
+    std::ostringstream out, err;
+    lang::session s(out, err);
+    const lang::value v = s.evaluate("solve(" + problem + ")");
+    return v.as_ex().subs(GiNaC::ex_to<GiNaC::symbol>(s.symbol("t")) == t);
+}
+
+}  // namespace
+
+TEST(SignalsResponse, PassedAgreesWithTheSolver) {
+    const auto x = respond({1, 3, 2}, {1}, GiNaC::cos(t), t);
+    EXPECT_EQ(x.kind, "passed");
+    EXPECT_TRUE(same(x.particular, (GiNaC::cos(t) + 3 * GiNaC::sin(t)) / 10));
+    EXPECT_TRUE(same(x.zero_state, solver("ode(x'' + 3*x' + 2*x = cos(t), x(0) = 0, x'(0) = 0)")));
+}
+
+TEST(SignalsResponse, ResonanceRaisesTheDegree) {
+    const auto x = respond({1, 0, 1}, {1}, GiNaC::cos(t), t);
+    EXPECT_EQ(x.kind, "resonant");
+    EXPECT_TRUE(same(x.zero_state, t * GiNaC::sin(t) / 2));
+    EXPECT_TRUE(same(x.zero_state, solver("ode(x'' + x = cos(t), x(0) = 0, x'(0) = 0)")));
+    // a double root of p on the input's mode: t^2 e^-t
+    const auto y = respond({1, 2, 1}, {1}, GiNaC::exp(-t), t);
+    EXPECT_EQ(y.kind, "resonant");
+    EXPECT_TRUE(same(y.zero_state, t * t * GiNaC::exp(-t) / 2));
+}
+
+TEST(SignalsResponse, FilteredAndPartlyFiltered) {
+    // x'' + 3x' + 2x = f' + f with f = e^-t: q(-1) = 0, the input is filtered out
+    const auto a = respond({1, 3, 2}, {1, 1}, GiNaC::exp(-t), t);
+    EXPECT_EQ(a.kind, "filtered out");
+    EXPECT_TRUE(a.particular.is_zero());
+    // q = X^2 + 4 removes cos 2t from cos t + cos 2t: the response has order 2 < 4
+    const auto b = respond({1, 3, 3, 1}, {1, 0, 4}, GiNaC::cos(t) + GiNaC::cos(2 * t), t);
+    EXPECT_EQ(b.kind, "partially filtered");
+    EXPECT_TRUE(same(b.particular, 3 * (GiNaC::sin(t) - GiNaC::cos(t)) / 4));
+    // q(D) f = 3 cos t
+    EXPECT_TRUE(same(b.zero_state, solver("ode(x''' + 3*x'' + 3*x' + x = 3*cos(t), x(0) = 0, x'(0) = 0, "
+                                          "x''(0) = 0)")));
+}
+
+// p(d) a zero divisor is not by itself resonance (FORMULAS.md, IV.3 case e): with
+// q cancelling the shared mode e^-t, the response stays in the input's class.
+TEST(SignalsResponse, ZeroDivisorWithoutResonance) {
+    const auto x = respond({1, 4, 3}, {1, 1}, GiNaC::exp(-t) + GiNaC::exp(-2 * t), t);
+    EXPECT_EQ(x.kind, "passed");
+    EXPECT_NE(x.report.find("zero divisor"), std::string::npos) << x.report;
+    EXPECT_TRUE(same(x.zero_state,
+                     solver("ode(x'' + 4*x' + 3*x = -exp(-2*t), x(0) = 0, x'(0) = 0)")));
+}
+
+TEST(SignalsResponse, TransmittanceAndBadInput) {
+    const auto P = polynomial_algebra::make(X * X + 1, X);
+    const coeffs H = transmittance(*P, P->generator(), {1, 3, 2}, {1});
+    // H(i) = 1/(1 + 3 i) = (1 - 3 i)/10
+    EXPECT_TRUE(same(H[0], ex(1) / 10));
+    EXPECT_TRUE(same(H[1], ex(-3) / 10));
+    EXPECT_THROW(transmittance(*P, P->generator(), {1, 0, 1}, {1}), zero_divisor_error);
+    EXPECT_THROW(respond({1, 0, 1}, {1, 0, 1}, GiNaC::cos(t), t), domain_error);  // m = p
+    EXPECT_THROW(respond({0, 1}, {1}, GiNaC::cos(t), t), domain_error);           // a_0 = 0
+    EXPECT_THROW(respond({1, t}, {1}, GiNaC::cos(t), t), domain_error);           // a coefficient in t
+}
