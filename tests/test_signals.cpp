@@ -37,6 +37,22 @@ TEST(Signals, PolynomialAlgebraImpulseResponseAndDerivative) {
     for (std::size_t i = 0; i < 3; ++i) EXPECT_TRUE(same(back[i], u[i])) << i;
 }
 
+// On P_n every generator d works with the same lambda (the coordinate of v^(n-1)):
+// d = v^2 + v on P_3, p = (X + 1)(X + 2)(X + 3) (d has the distinct eigenvalues 0, 2, 6),
+// Psi^-1(d w) = Psi^-1(w)'.
+TEST(Signals, PolynomialAlgebraOtherOperator) {
+    const auto P = polynomial_algebra::make(GiNaC::pow(X, 3) + 6 * GiNaC::pow(X, 2) + 11 * X + 6, X);
+    const coeffs v = P->generator();
+    const coeffs d = P->add(P->multiply(v, v), v);
+    const auto R = represent_on(P, d);
+    EXPECT_EQ(R.lambda, (coeffs{ex(0), ex(0), ex(1)}));
+    const coeffs u{ex(1), ex(-2), ex(3)};
+    const ex f = signal_of(R, u, t);
+    EXPECT_TRUE(same(signal_of(R, P->multiply(d, u), t), f.diff(t)));
+    const coeffs back = element_of(R, f, t);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_TRUE(same(back[i], u[i])) << i;
+}
+
 // The printed Psi(f_k) = e_k of Thm II.2.3 fails Psi(f') = d Psi(f) for a non-symmetric
 // [d]; the derived map holds it on a general algebra too (C as a structure-constant
 // algebra with d = i w: cos' = -w sin).

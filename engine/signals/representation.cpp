@@ -81,7 +81,15 @@ representation represent_on(algebra_ptr A, const coeffs& d) {
                             std::to_string(A->dim()) +
                             ", so the signals it represents satisfy an equation of that lower order "
                             "(Cor. II.1.1) and Psi is not one-to-one");
-    R.lambda = power_basis_functional(*A, d);
+    // on P_n the coordinate of v^(n-1) whatever d is (the algebra's own nondegenerate form):
+    // then Psi^-1 with d and with exp(h d) share lambda, and the samples of Psi^-1(w) are
+    // the sequence of the same w with the shift exp(h d) (Thm II.3.4)
+    if (dynamic_cast<const polynomial_algebra*>(A.get())) {
+        R.lambda = coeffs(A->dim(), GiNaC::ex(0));
+        R.lambda.back() = 1;
+    } else {
+        R.lambda = power_basis_functional(*A, d);
+    }
     return R;
 }
 
