@@ -40,6 +40,20 @@ TEST(SignalsResponse, PassedAgreesWithTheSolver) {
     EXPECT_TRUE(same(x.zero_state, solver("ode(x'' + 3*x' + 2*x = cos(t), x(0) = 0, x'(0) = 0)")));
 }
 
+// A symbolic rate: the answer is the generic one, and the report says where it fails.
+TEST(SignalsResponse, GenericParametersNameTheirException) {
+    const GiNaC::possymbol a("a");
+    const auto x = respond({1, a}, {1}, GiNaC::exp(-2 * t), t);
+    EXPECT_EQ(x.kind, "passed");
+    EXPECT_TRUE(same(x.particular, GiNaC::exp(-2 * t) / (a - 2)));
+    EXPECT_NE(x.report.find("not 0"), std::string::npos) << x.report;
+    EXPECT_NE(x.report.find("a"), std::string::npos) << x.report;
+    // at a = 2 itself: resonant, t e^(-2 t)
+    const auto y = respond({1, 2}, {1}, GiNaC::exp(-2 * t), t);
+    EXPECT_EQ(y.kind, "resonant");
+    EXPECT_TRUE(same(y.zero_state, t * GiNaC::exp(-2 * t)));
+}
+
 TEST(SignalsResponse, ResonanceRaisesTheDegree) {
     const auto x = respond({1, 0, 1}, {1}, GiNaC::cos(t), t);
     EXPECT_EQ(x.kind, "resonant");

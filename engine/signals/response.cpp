@@ -166,9 +166,19 @@ system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, cons
             out.kind = "passed";
             out.report = "passed: the response is in the input's class, x = Psi^-1[H(d) Psi(f)] (IV.3.16)";
         }
-        if (zero_divisor)
+        if (zero_divisor) {
             out.report += "; p(d) is a zero divisor, but the input has no component on the modes p shares "
                           "with it (no resonance)";
+        } else {
+            // generic in the parameters: say where it stops holding
+            const ex det = GiNaC::factor(tidy(A.determinant(pd)));
+            bool symbolic = false;
+            for (auto it = det.preorder_begin(); it != det.preorder_end(); ++it)
+                symbolic = symbolic || GiNaC::is_a<GiNaC::symbol>(*it);
+            if (symbolic)
+                out.report += "; for parameters with det p(d) = " + text(det) +
+                              " not 0 (where it is 0, p shares a mode with the input)";
+        }
     } else {
         out.kind = "resonant";
         if (!out.has_zero_state)
