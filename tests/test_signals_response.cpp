@@ -100,3 +100,33 @@ TEST(SignalsResponse, TransmittanceAndBadInput) {
     EXPECT_THROW(respond({0, 1}, {1}, GiNaC::cos(t), t), domain_error);           // a_0 = 0
     EXPECT_THROW(respond({1, t}, {1}, GiNaC::cos(t), t), domain_error);           // a coefficient in t
 }
+
+// Digital systems (the shift): the same algebra, Psi_d^-1(w) = lambda(w v^k), zero state
+// x(0) = ... = x(m-1) = 0 (IV.3.19). Each answer checked here by the recurrence itself.
+TEST(SignalsResponse, DigitalSystems) {
+    const GiNaC::symbol k("k");
+    // x(k+1) - x(k)/2 = f(k+1) + f(k), f = 1: 4 - 4 (1/2)^k
+    const auto a = respond_discrete({1, ex(-1) / 2}, {1, 1}, 1, k);
+    EXPECT_EQ(a.kind, "passed");
+    EXPECT_TRUE(same(a.particular, 4));
+    EXPECT_TRUE(same(a.zero_state, 4 - 4 * GiNaC::pow(ex(1) / 2, k)));
+    // (-1)^k is removed by q(E) = E + 1
+    EXPECT_EQ(respond_discrete({1, ex(-1) / 2}, {1, 1}, GiNaC::pow(-1, k), k).kind, "filtered out");
+    // x(k+1) + x(k) = (-1)^k k resonates: (-1)^k (k - k^2)/2
+    const auto r = respond_discrete({1, 1}, {1}, GiNaC::pow(-1, k) * k, k);
+    EXPECT_EQ(r.kind, "resonant");
+    EXPECT_TRUE(same(r.zero_state, GiNaC::pow(-1, k) * (k - k * k) / 2));
+    // the zero state by the recurrence, step by step, for x(k+2) - x(k)/4 = k 3^k
+    const auto z = respond_discrete({1, 0, ex(-1) / 4}, {1}, k * GiNaC::pow(3, k), k);
+    std::vector<ex> x{0, 0};
+    for (int j = 0; j < 8; ++j) x.push_back(x[std::size_t(j)] / 4 + ex(j) * GiNaC::pow(3, j));
+    for (int j = 0; j < 10; ++j) EXPECT_TRUE(same(z.zero_state.subs(k == j), x[std::size_t(j)])) << j;
+    // sequences: the least equation and the round trip
+    const GiNaC::symbol X("X");
+    EXPECT_TRUE(same(sequence_annihilator(k * GiNaC::pow(2, k) + GiNaC::cos(GiNaC::Pi * k / 2), k, X),
+                     GiNaC::pow(X - 2, 2) * (X * X + 1)));
+    const auto R = polynomial_representation(sequence_annihilator(GiNaC::pow(2, k) + k, k, X), X);
+    EXPECT_TRUE(same(sequence_formula(R, sequence_element(R, GiNaC::pow(2, k) + k, k), k), GiNaC::pow(2, k) + k));
+    EXPECT_THROW(sequence_annihilator(GiNaC::log(k), k, X), domain_error);
+    EXPECT_THROW(respond_discrete({1, 1}, {1, 0, 1}, 1, k), domain_error);  // m < p
+}

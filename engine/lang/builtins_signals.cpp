@@ -137,6 +137,59 @@ void register_signals_builtins(registry& r) {
                         x.has_zero_state ? value(x.zero_state) : value(std::string("not derived")),
                         value(x.report)};
         });
+    add_builtin(
+        r, section, "sequence_annihilator", "sequence_annihilator(f, k, X)",
+        "The monic real polynomial p(X) of least degree with p(E) f = 0, E the shift f(k) -> f(k + 1), for a "
+        "sequence in closed form (sums and products of k^j, a^k, exp(b k), cos(c k), sin(c k)): each ratio "
+        "rho = a e^b e^(+-i c) with highest power k^j gives (X - rho)^(j+1), a conjugate pair "
+        "(X^2 - 2 Re(rho) X + |rho|^2)^(j+1).",
+        "Thm II.3.1", "sequence_annihilator(k*2^k + cos(pi*k/2), k, X)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return signals::sequence_annihilator(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_symbol(a, 2, b));
+        });
+    add_builtin(
+        r, section, "represent_sequence", "represent_sequence(f, k [, d])",
+        "Psi_d(f): the element representing the sequence f(k) with the shift as multiplication by d. Without d: "
+        "on the smallest polynomial algebra P_n (p = sequence_annihilator(f, k, X)), d = v; with d: on d's "
+        "algebra, where f must solve q(E) f = 0 for q the minimal polynomial of d. lambda(w d^j) = f(j).",
+        "Thm II.3.1-II.3.3", "represent_sequence(2^k + k, k)", 2, 3,
+        [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
+            const GiNaC::ex& f = arg_ex(a, 0, b);
+            const GiNaC::symbol& k = arg_symbol(a, 1, b);
+            if (a.size() == 3) {
+                const element& d = arg_element(a, 2, b);
+                const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
+                return element(d.parent_ptr(), signals::sequence_element(R, f, k));
+            }
+            const GiNaC::ex X = ctx.symbol("X");
+            const GiNaC::ex p = signals::sequence_annihilator(f, k, GiNaC::ex_to<GiNaC::symbol>(X));
+            const auto R = signals::polynomial_representation(p, GiNaC::ex_to<GiNaC::symbol>(X));
+            return element(R.A, signals::sequence_element(R, f, k));
+        });
+    add_builtin(
+        r, section, "sequence_formula", "sequence_formula(w, k [, d])",
+        "Psi_d^-1(w) in closed form: lambda(w d^k) as an expression in k (d^k by interpolation of z^k on the "
+        "roots of d's minimal polynomial), d the generator v of a polynomial algebra by default.",
+        "Thm II.3.3", "sequence_formula(represent_sequence(2^k + k, k), k)", 2, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const element& w = arg_element(a, 0, b);
+            const GiNaC::symbol& k = arg_symbol(a, 1, b);
+            const auto R = representation_of(a, 2, w.parent_ptr(), b);
+            return signals::sequence_formula(R, w.coefficients(), k);
+        });
+    add_builtin(
+        r, section, "sequence_response", "sequence_response(a, b, f, k)",
+        "The response of the digital system a_0 x(k+m) + ... + a_m x(k) = b_0 f(k+p) + ... + b_p f(k) (m > p) to "
+        "the sequence f(k) in closed form: [particular, zero_state, report], as response() for analog systems; "
+        "zero_state has x(0) = ... = x(m-1) = 0 (IV.3.19).",
+        "(IV.3.7-19), Thm IV.3.2.1", "sequence_response([1, -1/2], [1], 1, k)", 4, 4,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const std::vector<GiNaC::ex> as = arg_ex_list(a, 0, b), bs = arg_ex_list(a, 1, b);
+            const auto x = signals::respond_discrete(as, bs, arg_ex(a, 2, b), arg_symbol(a, 3, b));
+            return list{value(x.particular),
+                        x.has_zero_state ? value(x.zero_state) : value(std::string("not derived")),
+                        value(x.report)};
+        });
 }
 
 }  // namespace symrep::lang

@@ -305,6 +305,200 @@ std::vector<ex> sequence_of(const representation& R, const coeffs& w, long first
     return out;
 }
 
+// d^k: z^k and its derivatives k (k-1) ... (k-j+1) z^(k-j) on the roots (as exp).
+coeffs power(const representation& R, const ex& k) {
+    scalar_function f;
+    f.name = "power";
+    f.value = [k](const ex& re, const ex& im, unsigned j, ex& out_re, ex& out_im) {
+        ex falling = 1;
+        for (unsigned i = 0; i < j; ++i) falling *= (k - i);
+        if (im.is_zero()) {
+            if (re.is_zero()) throw domain_error("d^k for a symbolic k: d has the root 0 (d is a zero divisor)");
+            out_re = tidy(falling * GiNaC::pow(re, k - j));
+            out_im = 0;
+            return;
+        }
+        // (re + i im)^(k - j) = rho^(k-j) (cos((k-j) theta) + i sin((k-j) theta))
+        const ex rho = GiNaC::sqrt(tidy(re * re + im * im)), theta = GiNaC::atan2(im, re);
+        out_re = falling * GiNaC::pow(rho, k - j) * GiNaC::cos((k - j) * theta);
+        out_im = falling * GiNaC::pow(rho, k - j) * GiNaC::sin((k - j) * theta);
+    };
+    return R.A->apply_function(R.d, f);
+}
+
+ex sequence_formula(const representation& R, const coeffs& w, const GiNaC::symbol& k) {
+    R.A->check_size(w, "sequence");
+    return tidy(functional(R.lambda, R.A->multiply(w, power(R, k))));
+}
+
+namespace {
+
+// One term of a sequence: c k^j rho^k with rho = (re, im).
+struct ratio_term {
+    ex c;
+    unsigned j;
+    ex re, im;
+};
+
+[[noreturn]] void not_a_sequence(const ex& f, const ex& part, const GiNaC::symbol& k) {
+    const std::string n = k.get_name();
+    throw domain_error("signals: " + text(f) + " is not a sequence of the form c " + n + "^j a^" + n + " exp(b " + n +
+                       ") cos(c " + n + ") / sin(c " + n + ") in " + n + ": its part " + text(part) +
+                       " is not (a, b, c free of " + n + ")");
+}
+
+// f as a sum of c k^j rho^k: cos and sin of c k split into the ratios e^(+-i c).
+std::vector<ratio_term> ratio_terms(const ex& f, const GiNaC::symbol& k) {
+    std::vector<ratio_term> terms;
+    const ex e = GiNaC::expand(f);
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        std::vector<ratio_term> parts{{ex(1), 0, ex(1), ex(0)}};
+        for (std::size_t n = 0; n < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++n) {
+            const ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(n) : term;
+            auto times = [&](const ex& c, unsigned dj, const ex& re, const ex& im) {
+                for (auto& u : parts) {
+                    const ex r = u.re * re - u.im * im, m = u.re * im + u.im * re;
+                    u = {u.c * c, u.j + dj, r, m};
+                }
+            };
+            if (!x.has(k)) {
+                times(x, 0, 1, 0);
+            } else if (x.is_equal(k)) {
+                times(1, 1, 1, 0);
+            } else if (GiNaC::is_a<GiNaC::power>(x) && x.op(0).is_equal(k) &&
+                       x.op(1).info(GiNaC::info_flags::posint)) {
+                times(1, unsigned(GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int()), 1, 0);
+            } else if (GiNaC::is_a<GiNaC::power>(x) && !x.op(0).has(k)) {  // a^(c k + e)
+                const ex u = GiNaC::expand(x.op(1));
+                if (!u.is_polynomial(k) || u.degree(k) != 1) not_a_sequence(f, x, k);
+                times(GiNaC::pow(x.op(0), u.coeff(k, 0)), 0, GiNaC::pow(x.op(0), u.coeff(k, 1)), 0);
+            } else if (GiNaC::is_a<GiNaC::function>(x)) {
+                const std::string name = GiNaC::ex_to<GiNaC::function>(x).get_name();
+                const ex u = GiNaC::expand(x.op(0));
+                if (!u.is_polynomial(k) || u.degree(k) != 1) not_a_sequence(f, x, k);
+                const ex b = u.coeff(k, 1), rest = u.coeff(k, 0);
+                if (name == "exp") {
+                    times(GiNaC::exp(rest), 0, GiNaC::exp(b), 0);
+                } else if (name == "cos" || name == "sin") {
+                    // cos(b k + r) = (e^(i r) e^(i b k) + e^(-i r) e^(-i b k))/2, sin likewise / i
+                    std::vector<ratio_term> split;
+                    for (const auto& p0 : parts) {
+                        for (int sg : {1, -1}) {
+                            ratio_term q = p0;
+                            const ex cr = GiNaC::cos(rest), sr = GiNaC::sin(rest) * sg;
+                            // c * (cos r + i sg sin r)/2 (cos) or /(2 i sg)... kept as a complex coefficient:
+                            // c' = c * e^(i sg r) / 2 for cos, c * e^(i sg r) / (2 i sg) for sin
+                            const ex coef = (cr + GiNaC::I * sr) / 2 / (name == "cos" ? ex(1) : GiNaC::I * sg);
+                            const ex r = q.re * GiNaC::cos(b) - q.im * sg * GiNaC::sin(b);
+                            const ex m = q.re * sg * GiNaC::sin(b) + q.im * GiNaC::cos(b);
+                            q = {q.c * coef, q.j, r, m};
+                            split.push_back(q);
+                        }
+                    }
+                    parts = split;
+                } else {
+                    not_a_sequence(f, x, k);
+                }
+            } else {
+                not_a_sequence(f, x, k);
+            }
+        }
+        for (auto& u : parts) terms.push_back({u.c, u.j, tidy(u.re), tidy(u.im)});
+    }
+    return terms;
+}
+
+}  // namespace
+
+ex sequence_annihilator(const ex& f, const GiNaC::symbol& k, const GiNaC::symbol& X) {
+    const std::vector<ratio_term> terms = ratio_terms(f, k);
+    // (re, im) -> (j -> coefficient)
+    std::vector<std::pair<std::pair<ex, ex>, std::map<unsigned, ex>>> by;
+    for (const auto& u : terms) {
+        auto it = by.begin();
+        for (; it != by.end(); ++it)
+            if (is_zero_scalar(tidy(it->first.first - u.re)) && is_zero_scalar(tidy(it->first.second - u.im))) break;
+        if (it == by.end()) {
+            by.push_back({{u.re, u.im}, {}});
+            it = by.end() - 1;
+        }
+        it->second[u.j] += u.c;
+    }
+    struct mode {
+        ex re, im;
+        unsigned m;
+    };
+    std::vector<mode> modes;
+    for (const auto& [rho, powers] : by) {
+        unsigned top = 0;
+        bool any = false;
+        for (const auto& [j, c] : powers)
+            if (!is_zero_scalar(tidy(c))) {
+                top = j;
+                any = true;
+            }
+        if (!any) continue;
+        if (is_zero_scalar(rho.first) && is_zero_scalar(rho.second))
+            throw domain_error("signals: " + text(f) + " has a part with ratio 0 (0^k), not a solution of a "
+                               "difference equation for every k");
+        modes.push_back({rho.first, rho.second, top + 1});
+    }
+    if (modes.empty())
+        throw domain_error("signals: the sequence is 0, which every algebra represents by 0; no least "
+                           "equation of positive order");
+    std::vector<bool> used(modes.size(), false);
+    ex q = 1;
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        if (used[i]) continue;
+        used[i] = true;
+        unsigned m = modes[i].m;
+        if (is_zero_scalar(tidy(modes[i].im))) {
+            q *= GiNaC::pow(X - modes[i].re, m);
+            continue;
+        }
+        for (std::size_t j = i + 1; j < modes.size(); ++j)
+            if (!used[j] && is_zero_scalar(tidy(modes[j].re - modes[i].re)) &&
+                is_zero_scalar(tidy(modes[j].im + modes[i].im))) {
+                used[j] = true;
+                m = std::max(m, modes[j].m);
+            }
+        q *= GiNaC::pow(X * X - 2 * modes[i].re * X + tidy(modes[i].re * modes[i].re + modes[i].im * modes[i].im), m);
+    }
+    return GiNaC::expand(q);
+}
+
+coeffs sequence_element(const representation& R, const ex& f, const GiNaC::symbol& k) {
+    const std::size_t n = R.A->dim();
+    ex residual = 0;
+    const ex p = GiNaC::expand(R.p);
+    for (std::size_t i = 0; i <= n; ++i) residual += p.coeff(R.X, int(i)) * f.subs(k == k + int(i));
+    residual = tidy(GiNaC::expand(residual));
+    if (!is_zero_scalar(residual)) {
+        const zero_decision z = decide_zero(residual);
+        if (z.is_zero == truth::no)
+            throw domain_error("signals: " + text(f) + " is not a solution of p(E) f = 0 for p = " +
+                               polynomial_text(R.p, R.X) + " (E the shift; not 0 " + witness_text(z) +
+                               "), so it is not represented on " + R.A->name());
+        if (z.is_zero == truth::unknown)
+            throw domain_error("signals: cannot decide whether " + text(f) + " solves p(E) f = 0 for p = " +
+                               polynomial_text(R.p, R.X));
+    }
+    std::vector<coeffs> dj{R.A->unit()};
+    for (std::size_t j = 1; j < n; ++j) dj.push_back(R.A->multiply(dj.back(), R.d));
+    std::vector<std::vector<ex>> M(n, std::vector<ex>(n));
+    std::vector<ex> b(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t i = 0; i < n; ++i) M[j][i] = functional(R.lambda, R.A->multiply(R.A->basis_vector(i), dj[j]));
+        b[j] = tidy(f.subs(k == int(j)));
+    }
+    const auto w = solve_linear(M, b);
+    if (!w) throw algebra_error("signals: the form lambda(x y) is degenerate on " + R.A->name());
+    coeffs out;
+    for (const ex& x : *w) out.push_back(tidy(x));
+    return out;
+}
+
 namespace {
 
 std::vector<ex> symbols_in(const ex& x) {

@@ -87,6 +87,25 @@ std::vector<exponent> exponents_of(const GiNaC::ex& f, const GiNaC::symbol& t);
 /// shift is multiplication by d). Negative k need d invertible (zero_divisor_error).
 std::vector<GiNaC::ex> sequence_of(const representation& R, const coeffs& w, long first, std::size_t count);
 
+/// d^k for a symbolic integer k (Hermite interpolation of z^k on the roots of d's minimal
+/// polynomial, as exp): the closed form of the shift's powers.
+coeffs power(const representation& R, const GiNaC::ex& k);
+
+/// Psi_d^-1(w) in closed form: lambda(w d^k) as an expression in the symbol k (Thm II.3.3).
+GiNaC::ex sequence_formula(const representation& R, const coeffs& w, const GiNaC::symbol& k);
+
+/// The monic real polynomial of least degree with q(E) f = 0, E the shift f(k) -> f(k+1), for
+/// a sequence f(k) given in closed form: sums and products of c k^j, a^k, exp(b k),
+/// cos(c k), sin(c k) (a, b, c free of k; parameters real). Each distinct ratio
+/// rho = a e^b (cos c +- i sin c) with highest power k^j and a coefficient not 0 gives
+/// (X - rho)^(j+1) (with its conjugate: (X^2 - 2 Re(rho) X + |rho|^2)^(j+1)). Throws
+/// domain_error naming what is not of this kind, and for f = 0.
+GiNaC::ex sequence_annihilator(const GiNaC::ex& f, const GiNaC::symbol& k, const GiNaC::symbol& X);
+
+/// Psi_d(f) for a sequence: the element w with lambda(w d^j) = f(j), j < n, after q(E) f = 0
+/// is proved for q the minimal polynomial of d.
+coeffs sequence_element(const representation& R, const GiNaC::ex& f, const GiNaC::symbol& k);
+
 /// (Thm II.3.4, Cor. II.3.5) Sampling with step h: the operator exp(h d), the
 /// characteristic polynomial q(l) = det(l I - exp(h [d])), and the aliasing: the
 /// sampled signals span fewer than n dimensions exactly when two distinct roots r, s of

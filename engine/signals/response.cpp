@@ -77,28 +77,49 @@ coeffs transmittance(const algebra& A, const coeffs& d, const std::vector<ex>& a
     return A.multiply(qd, A.inverse(pd));
 }
 
-system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t) {
+namespace {
+
+// sum c_i x(k + i), c from the polynomial in l (the shift E).
+ex apply_shift(const ex& poly, const GiNaC::symbol& l, const ex& x, const GiNaC::symbol& k) {
+    const ex P = GiNaC::expand(poly);
+    ex out = 0;
+    for (int i = 0; i <= P.degree(l); ++i) out += P.coeff(l, i) * x.subs(k == k + i);
+    return out;
+}
+
+system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t,
+                           bool discrete) {
     if (a.empty() || is_zero_scalar(a[0]))
         throw domain_error("response: the leading coefficient a_0 of the system is 0");
     if (b.empty()) throw domain_error("response: the input side b_0 .. b_p is empty");
     const std::size_t m = a.size() - 1;
-    if (m < 1 || b.size() - 1 >= m)
-        throw domain_error("response: the system needs order m > p (IV.3.7): m = " + std::to_string(m) +
-                           ", p = " + std::to_string(b.size() - 1));
+    // analog: m > p (IV.3.7; at m = p the zero-state response jumps at t = 0); digital: m >= p
+    if (m < 1 || b.size() - 1 > m || (!discrete && b.size() - 1 == m))
+        throw domain_error(std::string("response: the system needs order ") + (discrete ? "m >= p" : "m > p") +
+                           " (IV.3.7): m = " + std::to_string(m) + ", p = " + std::to_string(b.size() - 1));
     for (const ex& c : a)
         if (c.has(t)) throw domain_error("response: a coefficient a_k depends on " + t.get_name());
     for (const ex& c : b)
         if (c.has(t)) throw domain_error("response: a coefficient b_k depends on " + t.get_name());
     system_response out;
     const GiNaC::symbol X("X");
-    const ex r = annihilator(f, t, X);
+    const ex r = discrete ? sequence_annihilator(f, t, X) : annihilator(f, t, X);
+    const auto element = [&](const representation& Rep) {
+        return discrete ? sequence_element(Rep, f, t) : element_of(Rep, f, t);
+    };
+    const auto signal = [&](const representation& Rep, const coeffs& u) {
+        return discrete ? sequence_formula(Rep, u, t) : signal_of(Rep, u, t);
+    };
+    const auto apply = [&](const ex& poly, const ex& x) {
+        return discrete ? apply_shift(poly, X, x, t) : apply_operator(poly, X, x, t);
+    };
     out.input_equation = r;
     const ex P = system_polynomial(a, X), Q = system_polynomial(b, X);
 
     // the input's class: A = P_r, d = v (IV.3.10-16)
     const representation R = polynomial_representation(r, X);
     const algebra& A = *R.A;
-    const coeffs w = element_of(R, f, t);
+    const coeffs w = element(R);
     const coeffs pd = A.evaluate_polynomial(P.subs(X == R.X), R.X, R.d);
     const coeffs qd = A.evaluate_polynomial(Q.subs(X == R.X), R.X, R.d);
     const coeffs y = A.multiply(qd, w);
@@ -114,7 +135,7 @@ system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, cons
         const ex Pi = GiNaC::expand(P * r / a[0]);
         const representation B = polynomial_representation(Pi, X);
         const std::size_t N = B.A->dim();
-        const coeffs F = element_of(B, f, t);
+        const coeffs F = element(B);
         const GiNaC::matrix PM = multiplication_matrix(*B.A, B.A->evaluate_polynomial(P.subs(X == B.X), B.X, B.d));
         const coeffs QF = B.A->multiply(B.A->evaluate_polynomial(Q.subs(X == B.X), B.X, B.d), F);
         GiNaC::matrix M{static_cast<unsigned>(N + m), static_cast<unsigned>(N)};
@@ -131,7 +152,7 @@ system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, cons
         }
         coeffs xs;
         if (!solve_any(M, rhs, xs)) throw algebra_error("internal: the zero-state response of the system has no solution");
-        out.zero_state = signal_of(B, xs, t);
+        out.zero_state = signal(B, xs);
 
 
     } catch (const closed_form_error& e) {  // exp on P_Pi needs the roots of p r (a sign not decided)
@@ -145,7 +166,7 @@ system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, cons
         out.report = "filtered out: q(d) Psi(f) = 0 (q vanishes on every mode of the input), so the particular "
                      "response is 0 (case a of IV.3.2)";
     } else if (solvable) {
-        out.particular = signal_of(R, xw, t);
+        out.particular = signal(R, xw);
         // the order of the response's least equation: the dimension of the span of x, d x,
         // d^2 x, ... (the least g with g(d) x = 0). Case b of IV.3.2 prints "the minimal
         // polynomial of the element", which is not it: the unit has minimal polynomial
@@ -194,10 +215,9 @@ system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, cons
     }
     // every response substituted into the system (IV.3.7)
     const ex lhs_minus_rhs = [&](const ex& x) {
-        return tidy(apply_operator(P, X, x, t) - apply_operator(Q, X, f, t));
+        return tidy(GiNaC::expand(apply(P, x) - apply(Q, f)));
     }(out.particular);
-    const ex zs = out.has_zero_state ? tidy(apply_operator(P, X, out.zero_state, t) - apply_operator(Q, X, f, t))
-                                     : ex(0);
+    const ex zs = out.has_zero_state ? tidy(GiNaC::expand(apply(P, out.zero_state) - apply(Q, f))) : ex(0);
     if (!out.has_zero_state) out.report += "; the zero-state response is not derived: " + zero_state_refused;
     for (const ex& residual : {lhs_minus_rhs, zs}) {
         if (is_zero_scalar(residual)) continue;
@@ -212,6 +232,17 @@ system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, cons
                                "sqrt(w^2), declaring the parameters positive lets the proof through)");
     }
     return out;
+}
+
+}  // namespace
+
+system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t) {
+    return respond_on(a, b, f, t, false);
+}
+
+system_response respond_discrete(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f,
+                                 const GiNaC::symbol& k) {
+    return respond_on(a, b, f, k, true);
 }
 
 }  // namespace symrep::signals

@@ -54,4 +54,10 @@ struct system_response {
 system_response respond(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b, const GiNaC::ex& f,
                         const GiNaC::symbol& t);
 
+/// The same for a digital system (IV.3.7 with the shift: a_0 x(k+m) + ... + a_m x(k) =
+/// b_0 f(k+p) + ... + b_p f(k)) and a sequence f(k) in closed form (sequence_annihilator):
+/// the same algebra, Psi_d^-1(w) = lambda(w v^k), zero state x(0) = ... = x(m-1) = 0 (IV.3.19).
+system_response respond_discrete(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b,
+                                 const GiNaC::ex& f, const GiNaC::symbol& k);
+
 }  // namespace symrep::signals
