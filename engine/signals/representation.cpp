@@ -588,6 +588,16 @@ bool known_roots(const ex& p, const GiNaC::symbol& X, std::vector<ex>& roots) {
 
 }  // namespace
 
+namespace {
+// z as "u/pi" when z pi is free of pi (GiNaC would print 2*Pi^(-1)*h).
+std::string over_pi(const ex& z) {
+    const ex u = tidy(z * GiNaC::Pi);
+    if (u.has(GiNaC::Pi)) return text(z);
+    const std::string s = text(u);
+    return (GiNaC::is_a<GiNaC::add>(u) ? "(" + s + ")" : s) + "/pi";
+}
+}  // namespace
+
 // (Thm II.3.4, II.3.26, Cor. II.3.5)
 sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
     if (is_zero_scalar(h)) throw domain_error("sampling: the step h is 0");
@@ -624,7 +634,7 @@ sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
                 if (!m.is_zero() && is_zero_scalar(tidy(z - m))) met.push_back(pair);
                 else undecided = true;
             } else if (!z.has(GiNaC::I) && !h.info(GiNaC::info_flags::numeric)) {
-                conditions.push_back(pair + " when " + text(z) + " is a nonzero integer");
+                conditions.push_back(pair + " when " + over_pi(z) + " is a nonzero integer");
             } else if (!z.info(GiNaC::info_flags::numeric)) {
                 // a numeric step with a symbolic difference of roots: decided only where the
                 // real part of h (r - s) is seen nonzero
@@ -632,7 +642,7 @@ sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
                 const zero_decision d = decide_zero(tidy(im));
                 if (d.is_zero == truth::no) continue;  // |e^(h r)| != |e^(h s)|
                 if (d.is_zero == truth::unknown) undecided = true;
-                else conditions.push_back(pair + " when " + text(re) + " is a nonzero integer");
+                else conditions.push_back(pair + " when " + over_pi(re) + " is a nonzero integer");
             }
         }
     std::ostringstream os;
