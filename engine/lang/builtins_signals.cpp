@@ -33,6 +33,23 @@ signals::representation representation_of(const std::vector<value>& a, std::size
     return signals::polynomial_representation(P->polynomial(), GiNaC::ex_to<GiNaC::symbol>(P->variable()));
 }
 
+// represent / represent_sequence: on d's algebra (argument 3), or on the least P_n of f.
+value represent_signal(const std::vector<value>& a, context& ctx, const builtin& b, bool discrete) {
+    const GiNaC::ex& f = arg_ex(a, 0, b);
+    const GiNaC::symbol& t = arg_symbol(a, 1, b);
+    const auto element_in = [&](const signals::representation& R) {
+        return element(R.A, discrete ? signals::sequence_element(R, f, t) : signals::element_of(R, f, t));
+    };
+    if (a.size() == 3) {
+        const element& d = arg_element(a, 2, b);
+        return element_in(signals::represent_on(d.parent_ptr(), d.coefficients()));
+    }
+    const GiNaC::ex Xe = ctx.symbol("X");  // kept: X refers into it
+    const GiNaC::symbol& X = GiNaC::ex_to<GiNaC::symbol>(Xe);
+    const GiNaC::ex p = discrete ? signals::sequence_annihilator(f, t, X) : signals::annihilator(f, t, X);
+    return element_in(signals::polynomial_representation(p, X));
+}
+
 }  // namespace
 
 void register_signals_builtins(registry& r) {
@@ -45,17 +62,7 @@ void register_signals_builtins(registry& r) {
         "Psi(f') = d Psi(f); Psi^-1(w) = lambda(w exp(d t)), lambda the last coordinate in the power basis of d.",
         "Thm II.1.1, Thm II.2.3", "represent(t*exp(-t), t)", 2, 3,
         [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
-            const GiNaC::ex& f = arg_ex(a, 0, b);
-            const GiNaC::symbol& t = arg_symbol(a, 1, b);
-            if (a.size() == 3) {
-                const element& d = arg_element(a, 2, b);
-                const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
-                return element(d.parent_ptr(), signals::element_of(R, f, t));
-            }
-            const GiNaC::ex X = ctx.symbol("X");
-            const GiNaC::ex p = signals::annihilator(f, t, GiNaC::ex_to<GiNaC::symbol>(X));
-            const auto R = signals::polynomial_representation(p, GiNaC::ex_to<GiNaC::symbol>(X));
-            return element(R.A, signals::element_of(R, f, t));
+            return represent_signal(a, ctx, b, false);
         });
     add_builtin(
         r, section, "signal", "signal(w, t [, d])",
@@ -154,17 +161,7 @@ void register_signals_builtins(registry& r) {
         "algebra, where f must solve q(E) f = 0 for q the minimal polynomial of d. lambda(w d^j) = f(j).",
         "Thm II.3.1-II.3.3", "represent_sequence(2^k + k, k)", 2, 3,
         [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
-            const GiNaC::ex& f = arg_ex(a, 0, b);
-            const GiNaC::symbol& k = arg_symbol(a, 1, b);
-            if (a.size() == 3) {
-                const element& d = arg_element(a, 2, b);
-                const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
-                return element(d.parent_ptr(), signals::sequence_element(R, f, k));
-            }
-            const GiNaC::ex X = ctx.symbol("X");
-            const GiNaC::ex p = signals::sequence_annihilator(f, k, GiNaC::ex_to<GiNaC::symbol>(X));
-            const auto R = signals::polynomial_representation(p, GiNaC::ex_to<GiNaC::symbol>(X));
-            return element(R.A, signals::sequence_element(R, f, k));
+            return represent_signal(a, ctx, b, true);
         });
     add_builtin(
         r, section, "sequence_formula", "sequence_formula(w, k [, d])",

@@ -2,7 +2,6 @@
 #include "scalar/equality.h"
 
 #include <cstdint>
-#include <cstdlib>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -50,8 +49,9 @@ GiNaC::numeric sample(std::uint64_t& s, bool positive) {
     return v;
 }
 
-/// x evaluated with `digits` decimal digits, or nothing when that is not a number.
-bool evaluate(const GiNaC::ex& x, long digits, GiNaC::numeric& out) {
+}  // namespace
+
+bool evaluate_numeric(const GiNaC::ex& x, long digits, GiNaC::numeric& out) {
     const long saved = GiNaC::Digits;
     GiNaC::Digits = digits;
     try {
@@ -69,10 +69,12 @@ bool evaluate(const GiNaC::ex& x, long digits, GiNaC::numeric& out) {
     }
 }
 
+namespace {
+
 /// A nonzero value shown at two precisions: the same number to 20 digits, above 1e-25.
 bool nonzero_witness(const GiNaC::ex& x, GiNaC::numeric& value) {
     GiNaC::numeric a, b;
-    if (!evaluate(x, 40, a) || !evaluate(x, 80, b)) return false;
+    if (!evaluate_numeric(x, 40, a) || !evaluate_numeric(x, 80, b)) return false;
     const GiNaC::numeric size = GiNaC::abs(b);
     if (size < GiNaC::numeric(1) / GiNaC::pow(GiNaC::numeric(10), 25)) return false;
     if (GiNaC::abs(a - b) > size / GiNaC::pow(GiNaC::numeric(10), 20)) return false;
@@ -151,12 +153,12 @@ point_value value_at_generic_point(const GiNaC::ex& x) {
     } catch (const std::exception&) {
         return out;  // a pole at this point
     }
-    out.ok = evaluate(at, 20, out.low) && evaluate(at, 40, out.high);
+    out.ok = evaluate_numeric(at, 20, out.low) && evaluate_numeric(at, 40, out.high);
     return out;
 }
 
 bool seen_different(const point_value& a, const point_value& b) {
-    if (!a.ok || !b.ok || std::getenv("SYMREP_NO_SEEN")) return false;
+    if (!a.ok || !b.ok) return false;
     const GiNaC::numeric high = a.high - b.high, low = a.low - b.low;
     const GiNaC::numeric size = GiNaC::abs(high);
     static const GiNaC::numeric floor("1e-12");

@@ -30,6 +30,10 @@ struct zero_decision {
     GiNaC::ex value;     ///< for `no`: the value there (a float)
 };
 
+/// x evaluated with `digits` decimal digits (GiNaC::Digits restored); false when that is not
+/// a number or the evaluation fails (a pole, log(0)).
+bool evaluate_numeric(const GiNaC::ex& x, long digits, GiNaC::numeric& out);
+
 /// (three-valued zero test) Decides whether x is identically 0.
 zero_decision decide_zero(const GiNaC::ex& x);
 

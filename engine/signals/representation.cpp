@@ -111,6 +111,41 @@ ex signal_of(const representation& R, const coeffs& w, const ex& t) {
     return tidy(functional(R.lambda, R.A->multiply(w, e)));
 }
 
+namespace {
+
+// f in the solution space: the residual p(op) f (op = D or the shift E) proved 0, else refused
+// with the residual seen nonzero, or as undecided (never taken as 0).
+void require_solution(const representation& R, const ex& f, const ex& residual, const char* op) {
+    if (is_zero_scalar(residual)) return;
+    const zero_decision z = decide_zero(residual);
+    if (z.is_zero == truth::no)
+        throw domain_error("signals: " + text(f) + " is not a solution of p(" + op + ") f = 0 for p = " +
+                           polynomial_text(R.p, R.X) + " (p(" + op + ") f = " + text(residual) + ", not 0 " +
+                           witness_text(z) + "), so it is not represented on " + R.A->name());
+    if (z.is_zero == truth::unknown)
+        throw domain_error("signals: cannot decide whether " + text(f) + " solves p(" + op + ") f = 0 for p = " +
+                           polynomial_text(R.p, R.X) + " (p(" + op + ") f = " + text(residual) +
+                           " is neither proved 0 nor seen nonzero)");
+}
+
+// The element w with lambda(w d^j) = value[j], j < n (f^(j)(0) or f(j)).
+coeffs element_with_values(const representation& R, const std::vector<ex>& value) {
+    const std::size_t n = R.A->dim();
+    std::vector<std::vector<ex>> M(n, std::vector<ex>(n));
+    coeffs dj = R.A->unit();
+    for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t i = 0; i < n; ++i) M[j][i] = functional(R.lambda, R.A->multiply(R.A->basis_vector(i), dj));
+        dj = R.A->multiply(dj, R.d);
+    }
+    const auto w = solve_linear(M, value);
+    if (!w) throw algebra_error("signals: the form lambda(x y) is degenerate on " + R.A->name());
+    coeffs out;
+    for (const ex& x : *w) out.push_back(tidy(x));
+    return out;
+}
+
+}  // namespace
+
 // Psi(f): lambda(w d^k) = f^(k)(0), k < n, after p(D) f = 0 is proved.
 coeffs element_of(const representation& R, const ex& f, const GiNaC::symbol& t) {
     const std::size_t n = R.A->dim();
@@ -119,31 +154,10 @@ coeffs element_of(const representation& R, const ex& f, const GiNaC::symbol& t) 
     ex residual = 0;
     const ex p = GiNaC::expand(R.p);
     for (std::size_t k = 0; k <= n; ++k) residual += p.coeff(R.X, int(k)) * derivative[k];
-    residual = tidy(residual);
-    if (!is_zero_scalar(residual)) {
-        const zero_decision z = decide_zero(residual);
-        if (z.is_zero == truth::no)
-            throw domain_error("signals: " + text(f) + " is not a solution of p(D) f = 0 for p = " + polynomial_text(R.p, R.X) +
-                               " (p(D) f = " + text(residual) + ", not 0 " + witness_text(z) +
-                               "), so it is not represented on " + R.A->name());
-        if (z.is_zero == truth::unknown)
-            throw domain_error("signals: cannot decide whether " + text(f) + " solves p(D) f = 0 for p = " +
-                               polynomial_text(R.p, R.X) + " (p(D) f = " + text(residual) +
-                               " is neither proved 0 nor seen nonzero)");
-    }
-    std::vector<coeffs> dk{R.A->unit()};
-    for (std::size_t k = 1; k < n; ++k) dk.push_back(R.A->multiply(dk.back(), R.d));
-    std::vector<std::vector<ex>> M(n, std::vector<ex>(n));
-    std::vector<ex> b(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        for (std::size_t j = 0; j < n; ++j) M[k][j] = functional(R.lambda, R.A->multiply(R.A->basis_vector(j), dk[k]));
-        b[k] = tidy(derivative[k].subs(t == 0));
-    }
-    const auto w = solve_linear(M, b);
-    if (!w) throw algebra_error("signals: the form lambda(x y) is degenerate on " + R.A->name());
-    coeffs out;
-    for (const ex& x : *w) out.push_back(tidy(x));
-    return out;
+    require_solution(R, f, tidy(residual), "D");
+    std::vector<ex> at0;
+    for (std::size_t k = 0; k < n; ++k) at0.push_back(tidy(derivative[k].subs(t == 0)));
+    return element_with_values(R, at0);
 }
 
 namespace {
@@ -473,30 +487,10 @@ coeffs sequence_element(const representation& R, const ex& f, const GiNaC::symbo
     ex residual = 0;
     const ex p = GiNaC::expand(R.p);
     for (std::size_t i = 0; i <= n; ++i) residual += p.coeff(R.X, int(i)) * f.subs(k == k + int(i));
-    residual = tidy(GiNaC::expand(residual));
-    if (!is_zero_scalar(residual)) {
-        const zero_decision z = decide_zero(residual);
-        if (z.is_zero == truth::no)
-            throw domain_error("signals: " + text(f) + " is not a solution of p(E) f = 0 for p = " +
-                               polynomial_text(R.p, R.X) + " (E the shift; not 0 " + witness_text(z) +
-                               "), so it is not represented on " + R.A->name());
-        if (z.is_zero == truth::unknown)
-            throw domain_error("signals: cannot decide whether " + text(f) + " solves p(E) f = 0 for p = " +
-                               polynomial_text(R.p, R.X));
-    }
-    std::vector<coeffs> dj{R.A->unit()};
-    for (std::size_t j = 1; j < n; ++j) dj.push_back(R.A->multiply(dj.back(), R.d));
-    std::vector<std::vector<ex>> M(n, std::vector<ex>(n));
-    std::vector<ex> b(n);
-    for (std::size_t j = 0; j < n; ++j) {
-        for (std::size_t i = 0; i < n; ++i) M[j][i] = functional(R.lambda, R.A->multiply(R.A->basis_vector(i), dj[j]));
-        b[j] = tidy(f.subs(k == int(j)));
-    }
-    const auto w = solve_linear(M, b);
-    if (!w) throw algebra_error("signals: the form lambda(x y) is degenerate on " + R.A->name());
-    coeffs out;
-    for (const ex& x : *w) out.push_back(tidy(x));
-    return out;
+    require_solution(R, f, tidy(GiNaC::expand(residual)), "E");
+    std::vector<ex> values;
+    for (std::size_t j = 0; j < n; ++j) values.push_back(tidy(f.subs(k == int(j))));
+    return element_with_values(R, values);
 }
 
 namespace {
@@ -508,25 +502,13 @@ std::vector<ex> symbols_in(const ex& x) {
     return out;
 }
 
-// x at 40 digits (false when that is not a number).
+// x at 40 digits (false when that is not a number); rounding in the imaginary part of a
+// real constant dropped.
 bool numeric_value(const ex& x, GiNaC::numeric& out) {
-    const long saved = GiNaC::Digits;
-    GiNaC::Digits = 40;
-    try {
-        const ex v = GiNaC::evalf(x);
-        GiNaC::Digits = saved;
-        if (!GiNaC::is_a<GiNaC::numeric>(v)) return false;
-        out = GiNaC::ex_to<GiNaC::numeric>(v);
-        if (!out.is_real() && GiNaC::abs(out.imag()) < GiNaC::numeric(1, 1000000000) * GiNaC::abs(out))
-            out = out.real();  // rounding in the imaginary part of a real constant
-        return true;
-    } catch (const std::bad_alloc&) {
-        GiNaC::Digits = saved;
-        throw;
-    } catch (const std::exception&) {
-        GiNaC::Digits = saved;
-        return false;
-    }
+    if (!evaluate_numeric(x, 40, out)) return false;
+    if (!out.is_real() && GiNaC::abs(out.imag()) < GiNaC::numeric(1, 1000000000) * GiNaC::abs(out))
+        out = out.real();
+    return true;
 }
 
 // GiNaC's factor() works over the rationals: pi, Euler and Catalan go in as symbols.
