@@ -70,6 +70,7 @@ set style line 3 lc rgb "#e69f00" pt 4 ps 1.1 lw 1.5
 set style line 4 lc rgb "#0072b2" pt 6 ps 1.1 lw 1.5
 set style line 5 lc rgb "#009e73" pt 8 ps 1.1 lw 1.5
 set style line 6 lc rgb "#cc79a7" pt 12 ps 1.1 lw 1.5
+set style line 7 lc rgb "#56b4e9" pt 9 ps 1.9 lw 2
 clip(y) = y < 1e-17 ? 1e-17 : y
 is(col, s) = strcol(col) eq s
 '
@@ -83,8 +84,8 @@ set size 1, 0.055
 unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid; unset logscale; unset arrow; unset label
 set xrange [0:1]; set yrange [0:1]
 set key center center horizontal maxcols 3 samplen 3 font ",12"
-plot NaN w $1 ls 1 t "symrep closed form, compiled double program", NaN w $1 ls 2 t "symrep closed form, stable evaluator", \\
-     NaN w lp ls 3 t "rk4, $2", NaN w lp ls 4 t "dopri5, $3", \\
+plot NaN w $1 ls 1 t "symrep closed form, compiled double program", NaN w $1 ls 7 t "symrep closed form, spectral evaluator", \\
+     NaN w $1 ls 2 t "symrep closed form, stable evaluator", NaN w lp ls 3 t "rk4, $2", NaN w lp ls 4 t "dopri5, $3", \\
      NaN w lp ls 5 t "rkf78, $3", NaN w lp ls 6 t "bulirsch\\\\_stoer, $3"
 GP
 }
@@ -113,15 +114,20 @@ work_precision_figure() {
             if [ "$xcol" = 8 ]; then
                 # no right-hand sides: the closed forms are dashed horizontal lines at their error
                 echo "stats f using (is(1, \"$s\") && is(2, \"symrep compiled\") ? clip(\$4) : NaN) nooutput"
-                echo "cf = STATS_min; st = NaN"
+                echo "cf = STATS_min; st = NaN; sp = NaN"
+                if grep -q "^$s,symrep spectral," "$f"; then
+                    echo "stats f using (is(1, \"$s\") && is(2, \"symrep spectral\") ? clip(\$4) : NaN) nooutput"
+                    echo "sp = STATS_min"
+                fi
                 if grep -q "^$s,symrep stable," "$f"; then
                     echo "stats f using (is(1, \"$s\") && is(2, \"symrep stable\") ? clip(\$4) : NaN) nooutput"
                     echo "st = STATS_min"
                 fi
-                echo "plot cf w l ls 1 dt 2, st w l ls 2 dt 2, \\"
+                echo "plot cf w l ls 1 dt 2, st w l ls 2 dt 2, sp w l ls 7 dt 3, \\"
             else
                 echo "plot f using (is(1, \"$s\") && is(2, \"symrep compiled\") ? \$$xcol : NaN):(clip(\$4)) w p ls 1, \\"
                 echo "     f using (is(1, \"$s\") && is(2, \"symrep stable\") ? \$$xcol : NaN):(clip(\$4)) w p ls 2, \\"
+                echo "     f using (is(1, \"$s\") && is(2, \"symrep spectral\") ? \$$xcol : NaN):(clip(\$4)) w p ls 7, \\"
             fi
             for m in rk4 dopri5 rkf78 bulirsch_stoer; do
                 case $m in rk4) ls=3 ;; dopri5) ls=4 ;; rkf78) ls=5 ;; *) ls=6 ;; esac
@@ -159,6 +165,7 @@ do for [sc in "coriolis centrifugal"] {
   set title (sc eq "coriolis" ? "r'' + 2w×r' = g  (VI.1.50)" : "r'' + 2w×r' + w×(w×r) = g  (VI.1.56)")
   plot f using (is(1, sc) && is(4, "symrep compiled") ? \$3 : NaN):(clip(\$5)) w lp ls 1 ps 1.2, \
        f using (is(1, sc) && is(4, "symrep stable") ? \$3 : NaN):(clip(\$5)) w lp ls 2 ps 1, \
+       f using (is(1, sc) && is(4, "symrep spectral") ? \$3 : NaN):(clip(\$5)) w lp ls 7 ps 1, \
        f using (is(1, sc) && is(4, "rk4") ? \$3 : NaN):(clip(\$5)) w lp ls 3, \
        f using (is(1, sc) && is(4, "dopri5") ? \$3 : NaN):(clip(\$5)) w lp ls 4, \
        f using (is(1, sc) && is(4, "rkf78") ? \$3 : NaN):(clip(\$5)) w lp ls 5, \
@@ -169,8 +176,9 @@ set origin 0, 0
 set size 1, 0.1
 unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid; unset logscale
 set xrange [0:1]; set yrange [0:1]
-set key center center horizontal maxcols 6 samplen 3 font ",12"
-plot NaN w lp ls 1 t "symrep closed form, compiled double program", NaN w lp ls 2 t "symrep closed form, stable evaluator", \
+set key center center horizontal maxcols 4 samplen 3 font ",12"
+plot NaN w lp ls 1 t "symrep closed form, compiled double program", NaN w lp ls 7 t "symrep closed form, spectral evaluator", \
+     NaN w lp ls 2 t "symrep closed form, stable evaluator", \
      NaN w lp ls 3 t "rk4, step 10^{-3} s", NaN w lp ls 4 t "dopri5, tol 10^{-12}", \
      NaN w lp ls 5 t "rkf78, tol 10^{-12}", NaN w lp ls 6 t "bulirsch\\\\_stoer, tol 10^{-12}"
 unset multiplot
@@ -193,6 +201,7 @@ set key top left box opaque font ",10"
 f = "$out/wp_long_time.csv"
 plot f using (is(2, "symrep compiled") ? \$4 : NaN):(clip(\$5)) w l ls 1 t "symrep closed form, compiled double program", \
      f using (is(2, "symrep stable") ? \$4 : NaN):(clip(\$5)) w l ls 2 t "symrep closed form, stable evaluator", \
+     f using (is(2, "symrep spectral") ? \$4 : NaN):(clip(\$5)) w l ls 7 t "symrep closed form, spectral evaluator", \
      f using (is(2, "rk4") ? \$4 : NaN):(clip(\$5)) w l ls 3 t "rk4, step 0.5 s", \
      f using (is(2, "dopri5") ? \$4 : NaN):(clip(\$5)) w l ls 4 t "dopri5, tol 10^{-7}", \
      f using (is(2, "rkf78") && is(3, "1e-10") ? \$4 : NaN):(clip(\$5)) w l ls 5 t "rkf78, tol 10^{-10}", \

@@ -49,6 +49,7 @@
 #include "numeric/reference.h"
 #include "vector/vector.h"
 
+#include "numeric/spectral_evaluator.h"
 #if __has_include("numeric/stable_evaluator.h")
 #include "numeric/stable_evaluator.h"
 #define SYMREP_WP_HAVE_STABLE 1
@@ -84,6 +85,12 @@ evaluation make_compiled(const std::vector<ex>& outputs, const ex& t) {
             [f] { return std::to_string(f->n_instructions()) + " instructions"; }};
 }
 
+evaluation make_spectral(const std::vector<ex>& outputs, const ex& t) {
+    auto f = std::make_shared<const num::spectral_function>(outputs, t);
+    return {[f](const double* in, double* out, std::size_t n) { f->eval_many(in, out, n); },
+            [f] { return std::to_string(f->n_exponents()) + " exponents / " + std::to_string(f->n_levels()) + " levels"; }};
+}
+
 #ifdef SYMREP_WP_HAVE_STABLE
 evaluation make_stable(const std::vector<ex>& outputs, const ex& t) {
     auto f = std::make_shared<const num::stable_function>(outputs, std::vector<ex>{t});
@@ -103,6 +110,7 @@ evaluation make_stable(const std::vector<ex>& outputs, const ex& t) {
 
 const closed_form_evaluator closed_form_evaluators[] = {
     {"symrep compiled", make_compiled},
+    {"symrep spectral", make_spectral},
 #ifdef SYMREP_WP_HAVE_STABLE
     {"symrep stable", make_stable},
 #endif
