@@ -6,12 +6,22 @@
 
 #include "algebra/polynomial_algebra.h"
 #include "lang/builtins.h"
+#include "algebra/multicomplex.h"
+#include "signals/multicomplex_signals.h"
 #include "signals/representation.h"
 #include "signals/response.h"
 
 namespace symrep::lang {
 
 namespace {
+
+const multicomplex& multicomplex_of(const element& w, const builtin& b) {
+    const auto* M = dynamic_cast<const multicomplex*>(&w.parent());
+    if (!M)
+        throw type_error(b.name + ": " + w.parent().name() + " is not a multicomplex algebra (usage: " + b.signature +
+                         ")");
+    return *M;
+}
 
 const char* const section = "Signals (II.2-II.3)";
 
@@ -59,7 +69,8 @@ void register_signals_builtins(registry& r) {
         "products of t^k, exp(a t), cos(b t), sin(b t), cosh, sinh; parameters real) and the element lives in "
         "the smallest polynomial algebra P_n = R[X]/(p) that holds it (p = annihilator(f, t, X)), with "
         "d = v. With d: on d's algebra, where f must solve q(D) f = 0 for q the minimal polynomial of d. "
-        "Psi(f') = d Psi(f); Psi^-1(w) = lambda(w exp(d t)), lambda the last coordinate in the power basis of d.",
+        "Psi(f') = d Psi(f); Psi^-1(w) = lambda(w exp(d t)), lambda the last coordinate in the power basis of d "
+        "(on a multicomplex algebra the coordinate of 1, IV.1.16 corrected).",
         "Thm II.1.1, Thm II.2.3", "represent(t*exp(-t), t)", 2, 3,
         [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
             return represent_signal(a, ctx, b, false);
@@ -67,7 +78,9 @@ void register_signals_builtins(registry& r) {
     add_builtin(
         r, section, "signal", "signal(w, t [, d])",
         "Psi^-1(w): the signal lambda(w exp(d t)) represented by the element w, with the operator d (default: "
-        "the generator v of a polynomial algebra). signal(d*w, t) = diff(signal(w, t), t).",
+        "the generator v of a polynomial algebra). signal(d*w, t) = diff(signal(w, t), t). On a multicomplex "
+        "algebra with d = omega_0 i0 + ... + omega_n in, exp(d t) is the product of the carriers (IV.1.15) and "
+        "the signal a sum of products of their cosines and sines.",
         "Thm II.1.1, Thm II.2.3", "signal(represent(t*exp(-t), t), t)", 2, 3,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
             const element& w = arg_element(a, 0, b);
@@ -186,6 +199,46 @@ void register_signals_builtins(registry& r) {
             return list{value(x.particular),
                         x.has_zero_state ? value(x.zero_state) : value(std::string("not derived")),
                         value(x.report)};
+        });
+    add_builtin(
+        r, section, "modulation", "modulation(w, t, d)",
+        "The signal represented by w over a multicomplex algebra, with d = omega_0 i0 + ... + omega_n in "
+        "(+ a real part), as a carrier omega_0 with amplitude and phase modulation: [a, b, A, theta] with "
+        "signal(w, t, d) = a cos(omega_0 t) + b sin(omega_0 t) = A cos(omega_0 t - theta), A = sqrt(a^2 + b^2), "
+        "theta = atan2(b, a); a and b are themselves modulated by omega_1 .. omega_n.",
+        "(IV.1.24-30)", "modulation(one(multicomplex(1)), t, 3*imag_unit(multicomplex(1), 0) + "
+        "imag_unit(multicomplex(1), 1))", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const element& w = arg_element(a, 0, b);
+            const GiNaC::symbol& t = arg_symbol(a, 1, b);
+            const element& d = arg_element(a, 2, b);
+            const multicomplex& M = multicomplex_of(w, b);
+            if (&d.parent() != &w.parent() && d.parent().name() != w.parent().name())
+                throw type_error(b.name + ": w and d must be elements of the same algebra");
+            const auto c = signals::carriers_of(M, d.coefficients());
+            if (!c)
+                throw domain_error(b.name + ": d must be of the form sigma + omega_0 i0 + ... + omega_n in "
+                                            "(IV.1.9); it has components on products of imaginary units");
+            const auto m = signals::modulation_of(M, *c, w.coefficients(), t);
+            return list{value(m.a), value(m.b), value(m.amplitude), value(m.phase)};
+        });
+    add_builtin(
+        r, section, "amplitude_modulated", "amplitude_modulated(w)",
+        "Does w (an element of a multicomplex algebra) represent a purely amplitude-modulated signal "
+        "A cos(omega_0 t - phi_0) ... cos(omega_n t - phi_n), A > 0, for every d = omega_0 i0 + ... + omega_n in? "
+        "[true, A, [phi_0, ..., phi_n], report] when w = A exp(-(phi_0 i0 + ... + phi_n in)) (phi_k, k >= 1, "
+        "in [-pi/2, pi/2), phi_0 absorbing the sign); [false, 0, [], report] naming the condition that fails "
+        "(equal moduli of the idempotent components, phases of the form phi_0 + sum +-phi_k, decided without "
+        "choosing branches of arg). An equality that cannot be decided is an error, never a guess.",
+        "(IV.1.50-57, IV.1.64-68)", "amplitude_modulated(2*exp(imag_unit(multicomplex(1), 0)))", 1, 1,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const element& w = arg_element(a, 0, b);
+            const auto am = signals::amplitude_modulated(multicomplex_of(w, b), w.coefficients());
+            if (am.holds == truth::unknown) throw domain_error(b.name + ": " + am.report);
+            if (am.holds == truth::no) return list{value(false), value(GiNaC::ex(0)), value(list{}), value(am.report)};
+            list phases;
+            for (const GiNaC::ex& p : am.phases) phases.push_back(value(p));
+            return list{value(true), value(am.amplitude), value(phases), value(am.report)};
         });
 }
 

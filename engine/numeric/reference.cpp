@@ -179,8 +179,10 @@ struct rounder : GiNaC::map_function {
         const cln::cl_RA q = cln::rational(r);
         const cln::cl_RA a = cln::abs(q);
         long k = long(std::floor(double(cln::integer_length(cln::floor1(a))) * 0.30103)) - digits;
-        auto scaled = [&](long kk) {
-            return kk >= 0 ? a / cln::expt_pos(cln::cl_I(10), kk) : a * cln::expt_pos(cln::cl_I(10), -kk);
+        auto scaled = [&](long kk) -> cln::cl_RA {
+            // (expt_pos needs a positive exponent: at 0 it does not return)
+            if (kk == 0) return a;
+            return kk > 0 ? a / cln::expt_pos(cln::cl_I(10), kk) : a * cln::expt_pos(cln::cl_I(10), -kk);
         };
         cln::cl_I m = cln::round1(scaled(k));
         const cln::cl_I limit = cln::expt_pos(cln::cl_I(10), digits);

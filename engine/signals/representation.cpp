@@ -6,10 +6,12 @@
 #include <sstream>
 
 #include "algebra/exact_linear.h"
+#include "algebra/multicomplex.h"
 #include "algebra/polynomial_algebra.h"
 #include "core/error.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
+#include "signals/multicomplex_signals.h"
 
 namespace symrep::signals {
 
@@ -87,6 +89,10 @@ representation represent_on(algebra_ptr A, const coeffs& d) {
     if (dynamic_cast<const polynomial_algebra*>(A.get())) {
         R.lambda = coeffs(A->dim(), GiNaC::ex(0));
         R.lambda.back() = 1;
+    } else if (dynamic_cast<const multicomplex*>(A.get())) {
+        // (IV.1.16, corrected) the coordinate of 1: scal(x y) is nondegenerate (e_m^2 = +-1)
+        R.lambda = coeffs(A->dim(), GiNaC::ex(0));
+        R.lambda[0] = 1;
     } else {
         R.lambda = power_basis_functional(*A, d);
     }
@@ -107,7 +113,13 @@ representation polynomial_representation(const ex& p, const GiNaC::symbol& X) {
 // Psi^-1(w) = lambda(w exp(d t))
 ex signal_of(const representation& R, const coeffs& w, const ex& t) {
     R.A->check_size(w, "signal");
-    const coeffs e = R.A->exp(R.d, t);
+    coeffs e;
+    const auto* M = dynamic_cast<const multicomplex*>(R.A.get());
+    const auto c = M ? carriers_of(*M, R.d) : std::nullopt;
+    if (c)
+        e = exp_product_form(*M, *c, t);  // (IV.1.15) products of the carriers' cosines and sines
+    else
+        e = R.A->exp(R.d, t);
     return tidy(functional(R.lambda, R.A->multiply(w, e)));
 }
 

@@ -12,7 +12,8 @@
 // [d] [f], II.1.17; ../shared/thesis/FORMULAS.md). symrep derives the map instead:
 //     Psi^-1(w)(t) = lambda(w exp(d t)),
 // lambda the last coordinate in the power basis 1, d, ..., d^(n-1) (on a polynomial
-// algebra P_n: the coordinate of v^(n-1), for every operator d). Then
+// algebra P_n: the coordinate of v^(n-1), for every operator d; on the multicomplex
+// algebra: the coordinate of 1, IV.1, signals/multicomplex_signals.h). Then
 // Psi^-1(d w) = Psi^-1(w)' exactly, Psi^-1 is one-to-one when d generates A (the
 // form (x, y) -> lambda(x y) is nondegenerate on R[d] = R[X]/(p)), and on the
 // polynomial algebra P_n with d = v, Psi^-1(v^j) = g^(j), g the impulse response
