@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "algebra/multicomplex.h"
+#include "algebra/sobrero.h"
 #include "core/error.h"
 #include "lang/interpreter.h"
 #include "scalar/equality.h"
@@ -149,7 +150,7 @@ TEST(MulticomplexSignals, AmplitudeAndPhaseModulation) {
     const ex f = signal_of(R, w, t);
     const auto c = carriers_of(*A, d);
     ASSERT_TRUE(c.has_value());
-    const modulation m = modulation_of(*A, *c, w, t);
+    const modulation m = modulation_of(R, *c, w, t);
     EXPECT_TRUE(same_function(m.a * GiNaC::cos(7 * t) + m.b * GiNaC::sin(7 * t), f));
     EXPECT_TRUE(same_function(m.amplitude * GiNaC::cos(7 * t - m.phase), f));
     // a and b do not contain the carrier omega_0
@@ -214,4 +215,48 @@ TEST(MulticomplexSignals, Builtins) {
     EXPECT_NE(message("modulation(one(A), t, d + i0*i1)").find("(IV.1.9)"), std::string::npos);
     EXPECT_NE(message("amplitude_modulated(element(walsh(1), [1, 0]))").find("not a multicomplex algebra"),
               std::string::npos);
+}
+
+// (IV.1.2.8-18, corrected) the Sobrero algebra with d = delta + eps + j omega:
+// Psi^-1(w) = Re [w exp(d t)]_n (the coordinate of eps^n) is derivative-compatible and
+// represents eps^k by t^(n-k)/(n-k)! e^(delta t) cos(omega t) and j eps^k by
+// -t^(n-k)/(n-k)! e^(delta t) sin(omega t) (the printed IV.1.2.17-18 with k -> n - k and
+// the sign of j: the printed map turns d into its conjugate).
+TEST(SobreroSignals, RepresentationModulationAndSpecialType) {
+    const unsigned n = 2;
+    const auto S = sobrero::make(n);
+    const ex delta = ex(-1) / 2, omega = 2;
+    coeffs d(S->dim(), ex(0));
+    d[0] = delta;
+    d[1] = 1;
+    d[n + 1] = omega;
+    const auto R = represent_on(S, d);
+    const auto fact = [](unsigned m) { return GiNaC::factorial(m); };
+    for (unsigned k = 0; k <= n; ++k) {
+        const ex envelope = GiNaC::pow(t, n - k) / fact(n - k) * GiNaC::exp(delta * t);
+        EXPECT_TRUE(same_function(signal_of(R, S->basis_vector(k), t), envelope * GiNaC::cos(omega * t))) << k;
+        EXPECT_TRUE(same_function(signal_of(R, S->basis_vector(n + 1 + k), t), -envelope * GiNaC::sin(omega * t)));
+    }
+    const coeffs w{1, 3, 0, 2, -1, 0};  // 1 + 3 eps + j (2 - eps)
+    const ex f = signal_of(R, w, t);
+    EXPECT_TRUE(same_function(signal_of(R, S->multiply(d, w), t), f.diff(t)));
+    const coeffs back = element_of(R, f, t);
+    for (std::size_t i = 0; i < w.size(); ++i) EXPECT_TRUE(is_zero_scalar(tidy(back[i] - w[i]))) << i;
+    // (IV.1.2.20-25) a cos(omega t) + b sin(omega t) = A cos(omega t - theta) = the signal
+    const modulation m = sobrero_modulation(R, w, t);
+    EXPECT_TRUE(same_function(m.a * GiNaC::cos(omega * t) + m.b * GiNaC::sin(omega * t), f));
+    EXPECT_TRUE(same_function(m.amplitude * GiNaC::cos(omega * t - m.phase), f));
+    // (IV.1.2.42-45) special-type elements (coefficients on one line through 0) have a constant
+    // phase: b a' - a b' = 0; the element above does not
+    const auto phase_rate = [](const modulation& x) { return tidy((x.b * x.a.diff(t) - x.a * x.b.diff(t)).expand()); };
+    const coeffs special{3, 6, -3, 1, 2, -1};  // (3 + j)(1 + 2 eps - eps^2)
+    ASSERT_TRUE(S->is_special_type(special, false));
+    EXPECT_TRUE(is_zero_scalar(phase_rate(sobrero_modulation(R, special, t))));
+    EXPECT_FALSE(S->is_special_type(w, false));
+    EXPECT_FALSE(is_zero_scalar(phase_rate(m)));
+    // (IV.1.2.38-41) zero divisors (a_0 = b_0 = 0) represent degenerate signals: order <= 2n
+    const coeffs zd{0, 1, 2, 0, 3, 0};
+    EXPECT_TRUE(S->is_zero_divisor(zd));
+    EXPECT_LE(annihilator(signal_of(R, zd, t), t, X).degree(X), int(2 * n));
+    EXPECT_EQ(annihilator(f, t, X).degree(X), int(2 * (n + 1)));
 }

@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "algebra/polynomial_algebra.h"
+#include "algebra/sobrero.h"
 #include "lang/builtins.h"
 #include "algebra/multicomplex.h"
+#include "signals/modulation.h"
 #include "signals/multicomplex_signals.h"
 #include "signals/representation.h"
 #include "signals/response.h"
@@ -18,8 +20,8 @@ namespace {
 const multicomplex& multicomplex_of(const element& w, const builtin& b) {
     const auto* M = dynamic_cast<const multicomplex*>(&w.parent());
     if (!M)
-        throw type_error(b.name + ": " + w.parent().name() + " is not a multicomplex algebra (usage: " + b.signature +
-                         ")");
+        throw type_error(b.name + ": " + w.parent().name() + " is not a multicomplex" +
+                         (b.name == "modulation" ? " or Sobrero" : "") + " algebra (usage: " + b.signature + ")");
     return *M;
 }
 
@@ -70,7 +72,8 @@ void register_signals_builtins(registry& r) {
         "the smallest polynomial algebra P_n = R[X]/(p) that holds it (p = annihilator(f, t, X)), with "
         "d = v. With d: on d's algebra, where f must solve q(D) f = 0 for q the minimal polynomial of d. "
         "Psi(f') = d Psi(f); Psi^-1(w) = lambda(w exp(d t)), lambda the last coordinate in the power basis of d "
-        "(on a multicomplex algebra the coordinate of 1, IV.1.16 corrected).",
+        "(on a multicomplex algebra the coordinate of 1, IV.1.16 corrected; on a Sobrero algebra Re of the "
+        "coordinate of eps^n, IV.1.2.17-18 corrected).",
         "Thm II.1.1, Thm II.2.3", "represent(t*exp(-t), t)", 2, 3,
         [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
             return represent_signal(a, ctx, b, false);
@@ -202,24 +205,31 @@ void register_signals_builtins(registry& r) {
         });
     add_builtin(
         r, section, "modulation", "modulation(w, t, d)",
-        "The signal represented by w over a multicomplex algebra, with d = omega_0 i0 + ... + omega_n in "
-        "(+ a real part), as a carrier omega_0 with amplitude and phase modulation: [a, b, A, theta] with "
-        "signal(w, t, d) = a cos(omega_0 t) + b sin(omega_0 t) = A cos(omega_0 t - theta), A = sqrt(a^2 + b^2), "
-        "theta = atan2(b, a); a and b are themselves modulated by omega_1 .. omega_n.",
-        "(IV.1.24-30)", "modulation(one(multicomplex(1)), t, 3*imag_unit(multicomplex(1), 0) + "
+        "The signal represented by w as a carrier with amplitude and phase modulation: [a, b, A, theta] with "
+        "signal(w, t, d) = a cos(omega t) + b sin(omega t) = A cos(omega t - theta), A = sqrt(a^2 + b^2), "
+        "theta = atan2(b, a). On a multicomplex algebra d = omega_0 i0 + ... + omega_n in (+ a real part) and the "
+        "carrier is omega_0 (a and b are modulated by omega_1 .. omega_n); on a Sobrero algebra "
+        "d = delta + eps + j omega (any d with a j part omega) and a, b are polynomial-exponential.",
+        "(IV.1.24-30, IV.1.2.20-25)", "modulation(one(multicomplex(1)), t, 3*imag_unit(multicomplex(1), 0) + "
         "imag_unit(multicomplex(1), 1))", 3, 3,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
             const element& w = arg_element(a, 0, b);
             const GiNaC::symbol& t = arg_symbol(a, 1, b);
             const element& d = arg_element(a, 2, b);
-            const multicomplex& M = multicomplex_of(w, b);
-            if (&d.parent() != &w.parent() && d.parent().name() != w.parent().name())
+            if (d.parent().name() != w.parent().name())
                 throw type_error(b.name + ": w and d must be elements of the same algebra");
-            const auto c = signals::carriers_of(M, d.coefficients());
-            if (!c)
-                throw domain_error(b.name + ": d must be of the form sigma + omega_0 i0 + ... + omega_n in "
-                                            "(IV.1.9); it has components on products of imaginary units");
-            const auto m = signals::modulation_of(M, *c, w.coefficients(), t);
+            const auto R = signals::represent_on(d.parent_ptr(), d.coefficients());
+            signals::modulation m;
+            if (dynamic_cast<const sobrero*>(&w.parent())) {
+                m = signals::sobrero_modulation(R, w.coefficients(), t);
+            } else {
+                const multicomplex& M = multicomplex_of(w, b);
+                const auto c = signals::carriers_of(M, d.coefficients());
+                if (!c)
+                    throw domain_error(b.name + ": d must be of the form sigma + omega_0 i0 + ... + omega_n in "
+                                                "(IV.1.9); it has components on products of imaginary units");
+                m = signals::modulation_of(R, *c, w.coefficients(), t);
+            }
             return list{value(m.a), value(m.b), value(m.amplitude), value(m.phase)};
         });
     add_builtin(

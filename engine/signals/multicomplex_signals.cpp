@@ -19,8 +19,6 @@ std::size_t index_of_unit(const coeffs& u) {
     throw algebra_error("signals: an imaginary unit with no coordinate");
 }
 
-ex scal(const coeffs& x) { return x[0]; }
-
 coeffs carrier_factor(const multicomplex& A, unsigned k, const ex& omega, const ex& t) {
     coeffs f = A.unit();
     f[0] = GiNaC::cos(omega * t);
@@ -115,17 +113,14 @@ coeffs exp_product_form(const multicomplex& A, const carriers& c, const ex& t) {
 }
 
 // (IV.1.26-30) phi = scal(w exp(d t)) = cos(omega_0 t) scal(w E) + sin(omega_0 t) scal(w i0 E)
-modulation modulation_of(const multicomplex& A, const carriers& c, const coeffs& w, const ex& t) {
-    A.check_size(w, "modulation");
+modulation modulation_of(const representation& R, const carriers& c, const coeffs& w, const ex& t) {
+    const auto* M = dynamic_cast<const multicomplex*>(R.A.get());
+    if (!M) throw type_error("modulation: " + R.A->name() + " is not a multicomplex algebra");
+    const multicomplex& A = *M;
     coeffs E = A.unit();
     E[0] = c.sigma.is_zero() ? ex(1) : GiNaC::exp(c.sigma * t);
     for (unsigned k = 1; k <= A.order(); ++k) E = A.multiply(E, carrier_factor(A, k, c.omega[k], t));
-    modulation m;
-    m.a = tidy(scal(A.multiply(w, E)));
-    m.b = tidy(scal(A.multiply(w, A.multiply(A.imag_unit(0), E))));
-    m.amplitude = GiNaC::sqrt(tidy((m.a * m.a + m.b * m.b).expand()));
-    m.phase = GiNaC::atan2(m.b, m.a);
-    return m;
+    return carrier_modulation(R, A.imag_unit(0), E, w);
 }
 
 // (IV.1.50-57, 64-68) w = A exp(-(phi_0 i_0 + ... + phi_n i_n)), decided without branches

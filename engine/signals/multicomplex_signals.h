@@ -28,6 +28,7 @@
 
 #include "algebra/multicomplex.h"
 #include "scalar/equality.h"
+#include "signals/modulation.h"
 #include "signals/representation.h"
 
 namespace symrep::signals {
@@ -48,10 +49,8 @@ coeffs exp_product_form(const multicomplex& A, const carriers& c, const GiNaC::e
 /// modulation: phi = a cos(omega_0 t) + b sin(omega_0 t) = A cos(omega_0 t - theta),
 /// A = sqrt(a^2 + b^2), theta = atan2(b, a); a = scal(w E), b = scal(w i0 E),
 /// E = e^(sigma t) prod_(k >= 1) (cos omega_k t + i_k sin omega_k t).
-struct modulation {
-    GiNaC::ex a, b, amplitude, phase;
-};
-modulation modulation_of(const multicomplex& A, const carriers& c, const coeffs& w, const GiNaC::ex& t);
+/// (R on A, with lambda = scal) the carrier modulation of signals/modulation.h with J = i0.
+modulation modulation_of(const representation& R, const carriers& c, const coeffs& w, const GiNaC::ex& t);
 
 /// (IV.1.50-57, the conditions IV.1.64-68 read without branches) Does w represent a purely
 /// amplitude-modulated signal A prod_k cos(omega_k t - phi_k), A > 0, for every d of the

@@ -8,6 +8,7 @@
 #include "algebra/exact_linear.h"
 #include "algebra/multicomplex.h"
 #include "algebra/polynomial_algebra.h"
+#include "algebra/sobrero.h"
 #include "core/error.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
@@ -89,6 +90,11 @@ representation represent_on(algebra_ptr A, const coeffs& d) {
     if (dynamic_cast<const polynomial_algebra*>(A.get())) {
         R.lambda = coeffs(A->dim(), GiNaC::ex(0));
         R.lambda.back() = 1;
+    } else if (const auto* S = dynamic_cast<const sobrero*>(A.get())) {
+        // (IV.1.2.17-18, corrected) Re of the coordinate of eps^n: (x, y) -> Re[x y]_n is
+        // nondegenerate (the lowest coefficient of x against conj of it times eps^(n-k))
+        R.lambda = coeffs(A->dim(), GiNaC::ex(0));
+        R.lambda[S->n()] = 1;
     } else if (dynamic_cast<const multicomplex*>(A.get())) {
         // (IV.1.16, corrected) the coordinate of 1: scal(x y) is nondegenerate (e_m^2 = +-1)
         R.lambda = coeffs(A->dim(), GiNaC::ex(0));
