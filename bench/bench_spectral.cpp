@@ -4,8 +4,8 @@
 // form of each problem with the scene's numbers in, 200 times spread over the
 // scene's span, one trajectory per iteration (eval_many). Counter: seconds per point.
 //
-//   ./build/symrep_bench --benchmark_filter=Spectral --benchmark_repetitions=5 \
-//       --benchmark_report_aggregates_only=true
+//   ./build/symrep_bench --benchmark_filter=Spectral --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true   (one line)
 #include <benchmark/benchmark.h>
 
 #include <memory>

@@ -213,10 +213,10 @@ TEST(Interactive, TabCompletesFunctionName) {
     temp_home home;
     terminal t(home.path);
     ASSERT_TRUE(t.ready()) << t.screen();
-    t.type("inver");
+    t.type("minpo");
     t.key("Tab");
-    ASSERT_TRUE(t.wait_for("> inverse(")) << t.screen();
-    t.line("element(multicomplex(1), [2, 0, 0, 0]))");
+    ASSERT_TRUE(t.wait_for("> minpoly(")) << t.screen();
+    t.line("element(multicomplex(1), [2, 0, 0, 0]), X)");
     EXPECT_TRUE(t.wait_for("%1 = ")) << t.screen();
 }
 

@@ -91,6 +91,7 @@ void register_check_builtins(registry& r);        // lang/builtins_check.cpp: ex
 void register_mechanics_builtins(registry& r);    // lang/builtins_mechanics.cpp: ode, check, eval, verify
 void register_rules_builtins(registry& r);        // lang/builtins_rules.cpp: load_rules, rewrite, rules
 void register_plot_builtins(registry& r);
+void register_transforms_builtins(registry& r);  // lang/builtins_transforms.cpp: laplace, inverse_laplace, transform
 void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling         // lang/builtins_plot.cpp: plot, trajectory, hodograph
 
 /// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).

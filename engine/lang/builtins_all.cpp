@@ -20,6 +20,7 @@ void register_all_builtins(registry& r) {
     register_output_builtins(r);
     register_plot_builtins(r);
     register_signals_builtins(r);
+    register_transforms_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

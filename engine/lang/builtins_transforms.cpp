@@ -1,0 +1,55 @@
+// symrep/lang/builtins_transforms.cpp -- the integral transforms of Ch. V
+// (transforms/laplace.h): laplace, inverse_laplace, transform.
+#include <string>
+#include <vector>
+
+#include "lang/builtins.h"
+#include "transforms/laplace.h"
+
+namespace symrep::lang {
+
+namespace {
+
+const char* const section = "Transforms (V)";
+
+}  // namespace
+
+void register_transforms_builtins(registry& r) {
+    add_builtin(
+        r, section, "laplace", "laplace(f, t, s)",
+        "Lf(s) = int_0^oo f(t) e^(-s t) dt of a quasi-polynomial f (taken as 0 for t < 0), derived without an "
+        "integral: f = Psi^-1(w) on the polynomial algebra of its least equation p, and Lf = q(s)/p(s) with q the "
+        "polynomial of w's coordinates (the impulse response has transform 1/p). Checked by the inverse transform.",
+        "(V.1.3), Thm II.1.1", "laplace(t*exp(-2*t), t, s)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return transforms::laplace(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_ex(a, 2, b));
+        });
+    add_builtin(
+        r, section, "inverse_laplace", "inverse_laplace(F, s, t)",
+        "The causal signal f(t) whose Laplace transform is the proper rational function F(s): f = Psi^-1(q(v)) on "
+        "the polynomial algebra of F's denominator p (F = q/p, p monic). Checked by laplace(f, t, s) = F. An improper "
+        "F (a polynomial part: derivatives of the Dirac delta) or a non-rational F is refused.",
+        "(V.1.4), Thm II.1.1", "inverse_laplace(1/(s^2 + 2*s + 5), s, t)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return transforms::inverse_laplace(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_symbol(a, 2, b));
+        });
+    add_builtin(
+        r, section, "transform", "transform(f, t, d)",
+        "T f(d) = int_0^oo f(t) e^(-d t) dt for a causal quasi-polynomial f and an element d of any algebra: "
+        "[q(d) p(d)^-1, report], Lf = q/p. Over multicomplex(n) with d = omega_0 i0 + ... + omega_n in it is the "
+        "Fourier-type transform of V.2 (idempotent components F(i Omega_p), V.2.27); over sobrero(n) with "
+        "d = s + eps it is the Laplace-type transform sum_k eps^k/k! d^k/ds^k Lf(s) of V.3. The report says whether "
+        "the integral converges (Re r < Re mu for the exponents r of f and the eigenvalues mu of d), does not (the "
+        "value is then the analytic continuation), or under which condition on the parameters.",
+        "(V.1.5, V.2.11, V.2.27-29, V.3)", "transform(exp(-t), t, 2*imag_unit(multicomplex(1), 0) + "
+        "imag_unit(multicomplex(1), 1))", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const GiNaC::ex& f = arg_ex(a, 0, b);
+            const GiNaC::symbol& t = arg_symbol(a, 1, b);
+            const element& d = arg_element(a, 2, b);
+            const auto x = transforms::transform(d.parent_ptr(), d.coefficients(), f, t);
+            return list{value(element(d.parent_ptr(), x.value)), value(x.report)};
+        });
+}
+
+}  // namespace symrep::lang

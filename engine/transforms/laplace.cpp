@@ -1,0 +1,160 @@
+// symrep/transforms/laplace.cpp -- see laplace.h.
+#include "transforms/laplace.h"
+
+#include <sstream>
+
+#include "algebra/polynomial_algebra.h"
+#include "core/error.h"
+#include "scalar/scalar.h"
+#include "signals/representation.h"
+
+namespace symrep::transforms {
+
+using GiNaC::ex;
+
+namespace {
+
+std::string text(const ex& e) { return message_text(e, 200); }
+
+// (f causal quasi-polynomial) Lf(s) = q(s)/p(s) from f = Psi^-1(w) on P_p, not checked
+ex laplace_raw(const ex& f, const GiNaC::symbol& t, const ex& s) {
+    if (f.is_zero()) return 0;
+    const GiNaC::symbol X("X");
+    const ex p = signals::annihilator(f, t, X);
+    const auto R = signals::polynomial_representation(p, X);
+    const coeffs w = signals::element_of(R, f, t);
+    ex q = 0;
+    for (std::size_t j = 0; j < w.size(); ++j) q += w[j] * GiNaC::pow(s, j);
+    // lowest terms, the denominator factored over the rationals ((s + 3)^3, not its expansion)
+    const ex nd = GiNaC::normal(q / p.subs(X == s)).numer_denom();
+    return nd.op(0) / GiNaC::factor(nd.op(1));
+}
+
+struct rational {
+    ex q, p;  ///< p monic in s, deg q < deg p
+};
+
+rational proper_rational(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) {
+    if (F.has(t)) throw domain_error("inverse_laplace: F contains " + text(t) + "; it must be a function of " + text(s));
+    const ex nd = GiNaC::normal(F).numer_denom();
+    const ex num = nd.op(0).expand(), den = nd.op(1).expand();
+    if (!num.is_polynomial(s) || !den.is_polynomial(s))
+        throw domain_error("inverse_laplace: " + text(F) + " is not a rational function of " + text(s) +
+                           " (only those are transforms of quasi-polynomials)");
+    if (den.degree(s) < 1 || num.degree(s) >= den.degree(s))
+        throw domain_error("inverse_laplace: " + text(F) + " is not proper (numerator of degree " +
+                           std::to_string(num.degree(s)) + ", denominator of degree " +
+                           std::to_string(den.degree(s)) +
+                           "): its polynomial part is the transform of derivatives of the Dirac delta, not of a signal");
+    const ex lc = den.lcoeff(s);
+    return {tidy((num / lc).expand()), tidy((den / lc).expand())};
+}
+
+// Psi^-1(q(v)) on P_p, not checked
+ex inverse_raw(const rational& r, const GiNaC::symbol& s, const GiNaC::symbol& t) {
+    const GiNaC::symbol X("X");
+    const ex p = r.p.subs(s == X);
+    const auto R = signals::polynomial_representation(p, X);
+    coeffs w(R.A->dim(), ex(0));
+    for (std::size_t j = 0; j < w.size(); ++j) w[j] = r.q.coeff(s, int(j));
+    return signals::signal_of(R, w, t);
+}
+
+void require_same(const ex& a, const ex& b, const std::string& what) {
+    const ex diff = tidy((a - b).expand());
+    if (is_zero_scalar(diff)) return;
+    const zero_decision z = decide_zero(diff);
+    if (z.is_zero == truth::yes) return;
+    throw algebra_error(what + ": the check by the inverse transform failed (" + text(diff) +
+                        (z.is_zero == truth::no ? " is not 0)" : " is not proved 0)"));
+}
+
+ex real_part_of(const ex& x) { return tidy(GiNaC::real_part(x.expand())); }
+
+}  // namespace
+
+ex laplace(const ex& f, const GiNaC::symbol& t, const ex& s) {
+    const ex F = laplace_raw(f, t, s);
+    if (F.is_zero()) return F;
+    if (GiNaC::is_a<GiNaC::symbol>(s)) {
+        const GiNaC::symbol& ss = GiNaC::ex_to<GiNaC::symbol>(s);
+        require_same(inverse_raw(proper_rational(F, ss, t), ss, t), f, "laplace");
+    }
+    return F;
+}
+
+ex inverse_laplace(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) {
+    if (F.is_zero()) return 0;
+    const ex f = inverse_raw(proper_rational(F, s, t), s, t);
+    require_same(laplace_raw(f, t, s), F, "inverse_laplace");
+    return f;
+}
+
+algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, const GiNaC::symbol& t) {
+    A->check_size(d, "transform");
+    algebra_transform out;
+    if (f.is_zero()) {
+        out.value = coeffs(A->dim(), ex(0));
+        out.converges = truth::yes;
+        out.report = "the transform of 0 is 0";
+        return out;
+    }
+    const GiNaC::symbol X("X");
+    const ex p = signals::annihilator(f, t, X);
+    const auto R = signals::polynomial_representation(p, X);
+    const coeffs w = signals::element_of(R, f, t);
+    // q(d) p(d)^-1
+    coeffs qd(A->dim(), ex(0)), pd(A->dim(), ex(0)), dj = A->unit();
+    const int n = p.degree(X);
+    for (int j = 0; j <= n; ++j) {
+        if (j < int(w.size())) qd = A->add(qd, A->scale(w[std::size_t(j)], dj));
+        pd = A->add(pd, A->scale(p.coeff(X, j), dj));
+        if (j < n) dj = A->multiply(dj, d);
+    }
+    coeffs inv;
+    try {
+        inv = A->inverse(pd);
+    } catch (const zero_divisor_error&) {
+        throw domain_error("transform: p(d) = 0 on some idempotent component, for p = " +
+                           signals::polynomial_text(p, X) +
+                           " the least equation of the signal: an eigenvalue of d is an exponent of the signal, "
+                           "where its transform has a pole");
+    }
+    out.value = A->multiply(qd, inv);
+    for (ex& x : out.value) x = tidy(x);
+    // convergence: Re r < Re mu for the exponents r of f and the eigenvalues mu of d (the
+    // exponents of exp(d t)'s coordinates)
+    std::vector<ex> mus;
+    for (const ex& c : A->exp(d, t))
+        for (const auto& e : signals::exponents_of(c, t)) {
+            bool seen = false;
+            for (const ex& m : mus) seen = seen || is_zero_scalar(tidy(m - e.lambda));
+            if (!seen) mus.push_back(e.lambda);
+        }
+    out.converges = truth::yes;
+    std::string conditions;
+    for (const auto& r : signals::exponents_of(f, t))
+        for (const ex& mu : mus) {
+            const ex x = real_part_of(r.lambda - mu);
+            const bool constant = GiNaC::is_a<GiNaC::numeric>(x.evalf());
+            GiNaC::numeric v;
+            const bool known = constant && evaluate_numeric(x, 40, v) && v.is_real();
+            if (known && v < GiNaC::numeric(-1, 1000000000) * GiNaC::numeric(1, 1000000000)) continue;  // < -1e-18
+            if (is_zero_scalar(x) || (known && v > 0 && !(v < GiNaC::numeric(1, 1000000000) * GiNaC::numeric(1, 1000000000)))) {
+                out.converges = truth::no;
+                out.report = "the integral diverges: the exponent " + text(r.lambda) + " of the signal and the eigenvalue " +
+                             text(mu) + " of d have Re(r - mu) = " + text(x) +
+                             " >= 0; the value is the analytic continuation q(d) p(d)^-1";
+                return out;
+            }
+            out.converges = truth::unknown;
+            const std::string c = text(x) + " < 0";
+            if (conditions.find(c) == std::string::npos) conditions += (conditions.empty() ? "" : ", ") + c;
+        }
+    out.report = out.converges == truth::yes
+                     ? "converges: Re r < Re mu for every exponent r of the signal and eigenvalue mu of d"
+                     : "converges where " + conditions + " (otherwise the value is the analytic continuation)";
+    return out;
+}
+
+}  // namespace symrep::transforms

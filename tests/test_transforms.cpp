@@ -1,0 +1,183 @@
+// Tests of transforms/laplace.h and transforms/sampled.h (thesis Ch. V): the Laplace
+// transform and its inverse derived from the representation of signals, the transform
+// over algebras (V.2 Fourier-type over the multicomplex algebra, V.3 Laplace-type over
+// the Sobrero algebra) and its properties, and the FFT of sampled signals against the
+// exact transforms. Exact unless a tolerance is stated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+
+#include "algebra/multicomplex.h"
+#include "algebra/sobrero.h"
+#include "core/error.h"
+#include "scalar/scalar.h"
+#include "signals/response.h"
+#include "transforms/laplace.h"
+#include "transforms/sampled.h"
+
+using namespace symrep;
+using namespace symrep::transforms;
+using GiNaC::ex;
+
+namespace {
+
+const GiNaC::realsymbol t("t"), s("s");
+const GiNaC::possymbol a("a");
+
+bool same(const ex& x, const ex& y) { return is_zero_scalar(tidy(GiNaC::normal(x - y))); }
+
+bool same_element(const coeffs& x, const coeffs& y) {
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (!same(x[i], y[i])) return false;
+    return true;
+}
+
+coeffs transform_of(const algebra_ptr& A, const coeffs& d, const ex& f) { return transform(A, d, f, t).value; }
+
+}  // namespace
+
+// (V.1.3) pairs derived from the representation, each checked both ways
+TEST(Transforms, LaplacePairs) {
+    EXPECT_TRUE(same(laplace(ex(1), t, s), 1 / s));
+    EXPECT_TRUE(same(laplace(GiNaC::pow(t, 3) * GiNaC::exp(-2 * t), t, s), 6 / GiNaC::pow(s + 2, 4)));
+    EXPECT_TRUE(same(laplace(GiNaC::exp(-t) * GiNaC::cos(2 * t), t, s), (s + 1) / (GiNaC::pow(s + 1, 2) + 4)));
+    EXPECT_TRUE(same(laplace(GiNaC::sin(a * t), t, s), a / (s * s + a * a)));
+    EXPECT_TRUE(same(laplace(t * GiNaC::sinh(a * t), t, s), 2 * a * s / GiNaC::pow(s * s - a * a, 2)));
+    EXPECT_TRUE(same(laplace(ex(0), t, s), 0));
+    // inverse
+    EXPECT_TRUE(same(inverse_laplace(1 / (s * s + 2 * s + 5), s, t), GiNaC::exp(-t) * GiNaC::sin(2 * t) / 2));
+    EXPECT_TRUE(same(inverse_laplace((3 * s + 1) / GiNaC::pow(s - a, 2), s, t),
+                     GiNaC::exp(a * t) * (3 + (3 * a + 1) * t)));
+    // improper, non-rational, t inside: refused with the reason
+    const auto message = [](const std::function<void()>& f) -> std::string {
+        try {
+            f();
+        } catch (const symrep::error& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    EXPECT_NE(message([] { inverse_laplace(s / (s + 1), s, t); }).find("not proper"), std::string::npos);
+    EXPECT_NE(message([] { inverse_laplace(GiNaC::exp(-s) / s, s, t); }).find("not a rational function"),
+              std::string::npos);
+    EXPECT_NE(message([] { inverse_laplace(t / (s + 1), s, t); }).find("contains t"), std::string::npos);
+    EXPECT_NE(message([] { laplace(GiNaC::log(1 + t), t, s); }).find("log"), std::string::npos);
+}
+
+// (V.2.11, V.2.27) over multicomplex(1) with d = omega_0 i0 + omega_1 i1 the transform of a
+// causal f has the idempotent components F(i Omega_p) of the complex Fourier transform.
+TEST(Transforms, FourierTypeOverTheMulticomplexAlgebra) {
+    const auto A = multicomplex::make(1);
+    const coeffs d = A->add(A->scale(3, A->imag_unit(0)), A->imag_unit(1));  // Omega = 3 +- 1
+    const ex f = GiNaC::exp(-t) * GiNaC::cos(2 * t);
+    const auto T = transform(A, d, f, t);
+    EXPECT_EQ(T.converges, truth::yes) << T.report;
+    const std::vector<ex> dz = A->idempotent_components(d), tz = A->idempotent_components(T.value);
+    const ex F = laplace(f, t, s);
+    for (std::size_t p = 0; p < dz.size(); ++p) {
+        // d's component is I Omega_p: F(i Omega_p) = Lf(I Omega_p)
+        EXPECT_TRUE(same(tz[p], F.subs(s == dz[p]))) << p;
+        EXPECT_FALSE(is_zero_scalar(tidy(GiNaC::imag_part(dz[p]))));
+    }
+    // a growing signal: the integral diverges, said so
+    EXPECT_EQ(transform(A, d, GiNaC::exp(t), t).converges, truth::no);
+    // a symbolic decay rate: the condition is stated
+    const auto Ta = transform(A, d, GiNaC::exp(-a * t), t);
+    EXPECT_EQ(Ta.converges, truth::unknown);
+    EXPECT_NE(Ta.report.find("< 0"), std::string::npos) << Ta.report;
+}
+
+// (V.3) over sobrero(3) with d = s0 + eps: T f = sum_k eps^k/k! d^k/ds^k Lf(s0).
+TEST(Transforms, LaplaceTypeOverTheSobreroAlgebra) {
+    const unsigned n = 3;
+    const auto S = sobrero::make(n);
+    for (const ex& s0 : {ex(2), ex(GiNaC::numeric(1, 3)), ex(a)}) {
+        coeffs d(S->dim(), ex(0));
+        d[0] = s0;
+        d[1] = 1;
+        const ex f = t * GiNaC::exp(-t) + GiNaC::sin(t);
+        const coeffs T = transform_of(S, d, f);
+        const ex F = laplace(f, t, s);
+        for (unsigned k = 0; k <= n; ++k) {
+            EXPECT_TRUE(same(T[k], F.diff(s, k).subs(s == s0) / GiNaC::factorial(k))) << k;
+            EXPECT_TRUE(T[n + 1 + k].is_zero());  // no j part for a real d
+        }
+    }
+}
+
+// (V.2.28-29) T(f') = d T f - f(0) for causal f, T(f * g) = T f T g; on both algebras.
+TEST(Transforms, DerivativeAndConvolution) {
+    const auto A = multicomplex::make(1);
+    const coeffs dA = A->add(A->scale(3, A->imag_unit(0)), A->imag_unit(1));
+    const auto S = sobrero::make(2);
+    coeffs dS(S->dim(), ex(0));
+    dS[0] = 2;
+    dS[1] = 1;
+    dS[3] = 5;  // 2 + eps + 5 j (the coordinate of j for n = 2)
+    const std::vector<std::pair<algebra_ptr, coeffs>> cases{{A, dA}, {S, dS}};
+    const ex f = GiNaC::exp(-t) * (1 + 2 * t), g = GiNaC::exp(-2 * t);
+    const ex conv = GiNaC::exp(-t) * (2 * t - 1) + GiNaC::exp(-2 * t);  // int_0^t f(u) g(t - u) du
+    ASSERT_TRUE(same(laplace(conv, t, s), laplace(f, t, s) * laplace(g, t, s)));
+    for (const auto& [B, d] : cases) {
+        const coeffs Tf = transform_of(B, d, f);
+        coeffs rhs = B->multiply(d, Tf);
+        rhs[0] -= f.subs(t == 0);
+        EXPECT_TRUE(same_element(transform_of(B, d, f.diff(t)), rhs)) << B->name();
+        EXPECT_TRUE(same_element(transform_of(B, d, conv), B->multiply(Tf, transform_of(B, d, g)))) << B->name();
+    }
+}
+
+// (V.2.3, V.3.2) the transmittance: the zero-state response x of x'' + 3 x' + 2 x = f has
+// T x = H(d) T f, H(d) = p(d)^-1 (IV.3.15).
+TEST(Transforms, TransmittanceRelation) {
+    const auto A = multicomplex::make(1);
+    const coeffs d = A->add(A->scale(3, A->imag_unit(0)), A->imag_unit(1));
+    const std::vector<ex> as{1, 3, 2}, bs{1};
+    const ex f = GiNaC::exp(-t) * GiNaC::cos(5 * t) + t * GiNaC::exp(-2 * t);
+    const auto x = signals::respond(as, bs, f, t);
+    ASSERT_TRUE(x.has_zero_state);
+    const coeffs H = signals::transmittance(*A, d, as, bs);
+    EXPECT_TRUE(same_element(transform_of(A, d, x.zero_state), A->multiply(H, transform_of(A, d, f))));
+}
+
+// The FFT of samples against the exact transform: f = e^(-t) cos 3t on [0, 40) with
+// N = 2^16 samples (h = 6.1e-4). The trapezoid rule errs by h^2/12 (g'(0) - g'(40)) + O(h^4)
+// (Euler-Maclaurin) for g = f e^(-i omega t): |g'(0)| = |f'(0) - i omega f(0)| = |1 + i omega|,
+// g'(40) ~ e^(-40) is negligible, as is the tail: so |error(omega)| <= 1.1 h^2/12 |1 + i omega|
+// (2e-8 .. 2e-6 over the 400 frequencies, omega <= 63), and the error is not 0.
+TEST(Transforms, FastFourierTransformAgreesWithTheExactTransform) {
+    const std::size_t N = std::size_t{1} << 16;
+    const double span = 40, h = span / double(N);
+    std::vector<double> f(N);
+    for (std::size_t k = 0; k < N; ++k) f[k] = std::exp(-double(k) * h) * std::cos(3 * double(k) * h);
+    const auto Fs = sampled_fourier(f, h);
+    const ex F = laplace(GiNaC::exp(-t) * GiNaC::cos(3 * t), t, s);
+    double worst = 0, top = 0;
+    for (std::size_t m = 0; m < 400; ++m) {
+        const double omega = 2 * M_PI * double(m) / span;
+        const ex v = F.subs(s == GiNaC::I * GiNaC::numeric(omega)).evalf();
+        const std::complex<double> exact(GiNaC::ex_to<GiNaC::numeric>(GiNaC::real_part(v)).to_double(),
+                                         GiNaC::ex_to<GiNaC::numeric>(GiNaC::imag_part(v)).to_double());
+        const double bound = 1.1 * h * h / 12 * std::abs(std::complex<double>(1, omega));
+        EXPECT_LE(std::abs(Fs[m] - exact), bound) << "omega = " << omega;
+        worst = std::max(worst, std::abs(Fs[m] - exact));
+        top = std::max(top, std::abs(exact));
+    }
+    EXPECT_GT(worst, 0.0);
+    // (V.2.27) the multicomplex transform with Omega_p on the FFT grid: Omega = 2 pi (25, 15)/40
+    const auto A = multicomplex::make(1);
+    const coeffs d = A->add(A->scale(GiNaC::Pi, A->imag_unit(0)), A->scale(GiNaC::Pi / 4, A->imag_unit(1)));
+    const std::vector<ex> z = A->idempotent_components(transform(A, d, GiNaC::exp(-t) * GiNaC::cos(3 * t), t).value);
+    const std::vector<ex> dz = A->idempotent_components(d);
+    for (std::size_t p = 0; p < 2; ++p) {
+        const double Omega = GiNaC::ex_to<GiNaC::numeric>(GiNaC::imag_part(dz[p]).evalf()).to_double();
+        const auto m = static_cast<std::size_t>(std::lround(Omega * span / (2 * M_PI)));
+        const ex v = z[p].evalf();
+        const std::complex<double> exact(GiNaC::ex_to<GiNaC::numeric>(GiNaC::real_part(v)).to_double(),
+                                         GiNaC::ex_to<GiNaC::numeric>(GiNaC::imag_part(v)).to_double());
+        EXPECT_LE(std::abs(Fs[m] - exact), 1.1 * h * h / 12 * std::abs(std::complex<double>(1, Omega))) << p;
+    }
+    EXPECT_THROW(sampled_fourier({1.0}, 0.1), symrep::domain_error);
+    EXPECT_THROW(sampled_fourier({1.0, 2.0}, -1), symrep::domain_error);
+}
