@@ -118,6 +118,20 @@ TEST(Signals, SamplingAndAliasing) {
     const auto seq = sequence_of(Rh, u, 0, 4);
     for (int j = 0; j < 4; ++j) EXPECT_TRUE(same(seq[std::size_t(j)], f.subs(t == j * h))) << j;
 
+    // q from the factors of p equals det(l I - exp(h [d])) (a complex pair, a repeated
+    // real root, real roots of a quadratic): compared at l = 7/10, 2 and 5 with 30 digits
+    // (the determinant needs cos^2 + sin^2 = 1 to be seen equal), tolerance 1e-25
+    for (const ex& p : {ex(GiNaC::pow(X + 1, 2) * (X * X + 2 * X + 5)), ex(X * X - 3 * X + 1)}) {
+        const auto Rp = polynomial_representation(p.expand(), X);
+        const sampling sp = sample(Rp, ex(1) / 3, l);
+        const ex det = Rp.A->charpoly(sp.shift, l);
+        for (const GiNaC::numeric& at : {GiNaC::numeric(7, 10), GiNaC::numeric(2), GiNaC::numeric(5)}) {
+            GiNaC::numeric v;
+            ASSERT_TRUE(evaluate_numeric((sp.q - det).subs(l == at), 30, v));
+            EXPECT_LT(GiNaC::abs(v), GiNaC::numeric("1e-25")) << p << " at l = " << at;
+        }
+    }
+
     // x'' + pi^2 x = 0 at step 1: e^(i pi) = e^(-i pi) = -1, q = (l + 1)^2, aliasing
     const auto P = polynomial_representation(X * X + GiNaC::pow(GiNaC::Pi, 2), X);
     const sampling a = sample(P, 1, l);

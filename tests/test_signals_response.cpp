@@ -130,3 +130,22 @@ TEST(SignalsResponse, DigitalSystems) {
     EXPECT_THROW(sequence_annihilator(GiNaC::log(k), k, X), domain_error);
     EXPECT_THROW(respond_discrete({1, 1}, {1, 0, 1}, 1, k), domain_error);  // m < p
 }
+
+// (IV.3.15) H(i w) as gain and phase: the notch (X^2 + 4)/(X + 1)^3 has gain
+// |4 - w^2|/(1 + w^2)^(3/2) (0 at w = 2) and gain * (cos phase + i sin phase) = H(i w).
+TEST(SignalsResponse, FrequencyResponse) {
+    const GiNaC::realsymbol om("om");
+    const auto fr = frequency_response_of({1, 3, 3, 1}, {1, 0, 4}, om);
+    for (const GiNaC::numeric& x : {GiNaC::numeric(0), GiNaC::numeric(1, 2), GiNaC::numeric(2), GiNaC::numeric(7)}) {
+        const ex H = ((4 - x * x) / GiNaC::pow(1 + GiNaC::I * x, 3)).evalf();
+        const ex g = fr.gain.subs(om == x).evalf(), ph = fr.phase.subs(om == x).evalf();
+        EXPECT_LT(GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>((GiNaC::abs(H) - g).evalf())), 1e-15) << x;
+        if (x != 2) {
+            EXPECT_LT(GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>((g * (GiNaC::cos(ph) + GiNaC::I * GiNaC::sin(ph)) - H).evalf())),
+                      1e-15)
+                << x;
+        }
+    }
+    EXPECT_TRUE(fr.gain.subs(om == 2).is_zero());
+    EXPECT_THROW(frequency_response_of({}, {1}, om), symrep::type_error);
+}

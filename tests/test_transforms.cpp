@@ -15,6 +15,7 @@
 #include "signals/response.h"
 #include "transforms/laplace.h"
 #include "transforms/sampled.h"
+#include "numeric/quadrature.h"
 
 using namespace symrep;
 using namespace symrep::transforms;
@@ -180,4 +181,50 @@ TEST(Transforms, FastFourierTransformAgreesWithTheExactTransform) {
     }
     EXPECT_THROW(sampled_fourier({1.0}, 0.1), symrep::domain_error);
     EXPECT_THROW(sampled_fourier({1.0, 2.0}, -1), symrep::domain_error);
+}
+
+// The transforms against numerical quadrature (numeric/quadrature.h, Gauss-Kronrod; the
+// integrands decay like e^(-t/2) or faster, so [0, 120] leaves a tail below 1e-26):
+// 1e-12 relative, the quadrature's own accuracy on smooth integrands being ~1e-14.
+TEST(Transforms, AgreeWithNumericalQuadrature) {
+    const GiNaC::realsymbol u("u");
+    for (const ex& f : {ex(GiNaC::pow(t, 2) * GiNaC::exp(-t)), ex(GiNaC::exp(-t) * GiNaC::cos(3 * t)),
+                        ex(t * GiNaC::exp(-2 * t) * GiNaC::sin(t) + 1)}) {
+        const ex F = laplace(f, t, s);
+        for (const GiNaC::numeric& s0 : {GiNaC::numeric(1, 2), GiNaC::numeric(2), GiNaC::numeric(7, 3)}) {
+            const double exact = GiNaC::ex_to<GiNaC::numeric>(F.subs(s == s0).evalf()).to_double();
+            const double q = num::integrate_numerically(u, 0, 120, (f * GiNaC::exp(-s0 * t)).subs(t == u));
+            EXPECT_NEAR(q, exact, 1e-12 * std::fabs(exact)) << f << " at s = " << s0;
+        }
+        // the multicomplex transform's components F(i Omega_p): real and imaginary parts
+        {
+            const auto A = multicomplex::make(1);
+            const coeffs d = A->add(A->scale(3, A->imag_unit(0)), A->imag_unit(1));
+            const auto T = transform(A, d, f * GiNaC::exp(-t), t);  // decaying for every f above
+            const std::vector<ex> z = A->idempotent_components(T.value), dz = A->idempotent_components(d);
+            for (std::size_t p = 0; p < z.size(); ++p) {
+                const ex Omega = tidy(GiNaC::imag_part(dz[p]));
+                const ex g = (f * GiNaC::exp(-t)).subs(t == u);
+                const double re = num::integrate_numerically(u, 0, 120, g * GiNaC::cos(Omega * u));
+                const double im = -num::integrate_numerically(u, 0, 120, g * GiNaC::sin(Omega * u));
+                const double zr = GiNaC::ex_to<GiNaC::numeric>(GiNaC::real_part(z[p]).evalf()).to_double();
+                const double zi = GiNaC::ex_to<GiNaC::numeric>(GiNaC::imag_part(z[p]).evalf()).to_double();
+                const double scale = std::hypot(zr, zi);
+                EXPECT_NEAR(re, zr, 1e-12 * scale) << f << ", p = " << p;
+                EXPECT_NEAR(im, zi, 1e-12 * scale) << f << ", p = " << p;
+            }
+        }
+    }
+}
+
+// (V.2.1) linearity and modulation: T[e^(-a t) f](d) = T f(d + a), T[c f + g] = c T f + T g.
+TEST(Transforms, LinearityAndModulation) {
+    const auto A = multicomplex::make(1);
+    const coeffs d = A->add(A->scale(3, A->imag_unit(0)), A->imag_unit(1));
+    const ex f = t * GiNaC::exp(-t) + GiNaC::cos(5 * t) * GiNaC::exp(-t / 2), g = GiNaC::exp(-3 * t);
+    coeffs shifted = d;
+    shifted[0] += 2;
+    EXPECT_TRUE(same_element(transform_of(A, d, GiNaC::exp(-2 * t) * f), transform_of(A, shifted, f)));
+    EXPECT_TRUE(same_element(transform_of(A, d, 7 * f + g),
+                             A->add(A->scale(7, transform_of(A, d, f)), transform_of(A, d, g))));
 }

@@ -143,6 +143,16 @@ void register_signals_builtins(registry& r) {
             return element(d.parent_ptr(), signals::transmittance(d.parent(), d.coefficients(), as, bs));
         });
     add_builtin(
+        r, section, "frequency_response", "frequency_response(a, b, w)",
+        "The transmittance of a_0 x^(m) + ... + a_m x = b_0 f^(p) + ... + b_p f on the imaginary axis, "
+        "H(i w) = q(i w)/p(i w), as [gain, phase]: gain = |H(i w)|, phase = atan2(Im H, Re H), real expressions "
+        "in the real frequency w (for plots of a filter).",
+        "(IV.3.15)", "frequency_response([1, 1, 1], [1], w)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const auto fr = signals::frequency_response_of(arg_ex_list(a, 0, b), arg_ex_list(a, 1, b), arg_ex(a, 2, b));
+            return list{value(fr.gain), value(fr.phase)};
+        });
+    add_builtin(
         r, section, "response", "response(a, b, f, t)",
         "The response of a_0 x^(m) + ... + a_m x = b_0 f^(p) + ... + b_p f (m > p) to the quasi-polynomial input "
         "f(t): [particular, zero_state, report]. particular = Psi^-1[H(d) Psi(f)] in the input's class (d = v on "

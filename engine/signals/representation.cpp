@@ -586,6 +586,44 @@ bool known_roots(const ex& p, const GiNaC::symbol& X, std::vector<ex>& roots) {
     return all;
 }
 
+// (Cor. II.3.5) q(l) = det(l I - exp(h [d])) from the factors of p: the eigenvalues of
+// exp(h d) are e^(h r), r the roots of p with their multiplicities, so a factor (X - r)^m
+// gives (l - e^(h r))^m and a quadratic a X^2 + b X + c with roots alpha +- i beta
+// (alpha +- gamma) gives l^2 - 2 e^(h alpha) cos(h beta) l + e^(2 h alpha) (cosh(h gamma)
+// for real roots). False (q not formed) for a factor of degree > 2 or a discriminant of
+// unknown sign: the caller then expands the determinant.
+bool shift_charpoly(const ex& p, const GiNaC::symbol& X, const ex& h, const GiNaC::symbol& l, ex& q) {
+    const ex f = factor_with_constants(p);
+    q = 1;
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(f) ? f.nops() : 1); ++i) {
+        ex g = GiNaC::is_a<GiNaC::mul>(f) ? f.op(i) : f;
+        ex m = 1;
+        if (GiNaC::is_a<GiNaC::power>(g)) {
+            m = g.op(1);
+            g = g.op(0);
+        }
+        if (!g.has(X)) continue;
+        const ex e = GiNaC::expand(g);
+        const int deg = e.degree(X);
+        if (deg == 1) {
+            q *= GiNaC::pow(l - GiNaC::exp(tidy(-h * e.coeff(X, 0) / e.coeff(X, 1))), m);
+        } else if (deg == 2) {
+            const ex a = e.coeff(X, 2), b = e.coeff(X, 1), c = e.coeff(X, 0);
+            const ex disc = tidy(b * b - 4 * a * c);
+            GiNaC::numeric v;
+            if (!GiNaC::is_a<GiNaC::numeric>(disc.evalf()) || !numeric_value(disc, v) || !v.is_real() || v.is_zero())
+                return false;
+            const ex alpha = tidy(-b / (2 * a)), width = tidy(square_root(v < 0 ? -disc : disc) / (2 * a));
+            const ex middle = v < 0 ? GiNaC::cos(tidy(h * width)) : GiNaC::cosh(tidy(h * width));
+            q *= GiNaC::pow(l * l - 2 * GiNaC::exp(tidy(h * alpha)) * middle * l + GiNaC::exp(tidy(2 * h * alpha)), m);
+        } else {
+            return false;
+        }
+    }
+    q = tidy(q.expand());
+    return true;
+}
+
 }  // namespace
 
 namespace {
@@ -604,7 +642,7 @@ sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
     sampling s;
     s.shift = R.A->exp(R.d, h);
     for (auto& x : s.shift) x = tidy(x);
-    s.q = R.A->charpoly(s.shift, l);
+    if (!shift_charpoly(R.p, R.X, h, l, s.q)) s.q = R.A->charpoly(s.shift, l);
     std::vector<ex> r;
     const bool all = known_roots(R.p, R.X, r);
     // h (r - s) / (2 pi i) for each pair of distinct roots: a nonzero integer is aliasing

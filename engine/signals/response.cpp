@@ -236,6 +236,21 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
 
 }  // namespace
 
+frequency_response frequency_response_of(const std::vector<ex>& a, const std::vector<ex>& b, const ex& w) {
+    if (a.empty() || b.empty()) throw type_error("frequency_response: the lists a and b must not be empty");
+    const GiNaC::symbol l("l");
+    const ex iw = GiNaC::I * w;
+    const ex p = system_polynomial(a, l).subs(l == iw).expand(), q = system_polynomial(b, l).subs(l == iw).expand();
+    const ex pr = tidy(GiNaC::real_part(p)), pi = tidy(GiNaC::imag_part(p));
+    const ex qr = tidy(GiNaC::real_part(q)), qi = tidy(GiNaC::imag_part(q));
+    const ex p2 = tidy((pr * pr + pi * pi).expand()), q2 = tidy((qr * qr + qi * qi).expand());
+    frequency_response r;
+    r.gain = GiNaC::sqrt(tidy(q2 / p2));
+    // H = q conj(p) / |p|^2
+    r.phase = GiNaC::atan2(tidy((qi * pr - qr * pi).expand()), tidy((qr * pr + qi * pi).expand()));
+    return r;
+}
+
 system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t) {
     return respond_on(a, b, f, t, false);
 }

@@ -40,6 +40,15 @@ GiNaC::ex system_polynomial(const std::vector<GiNaC::ex>& a, const GiNaC::symbol
 coeffs transmittance(const algebra& A, const coeffs& d, const std::vector<GiNaC::ex>& a,
                      const std::vector<GiNaC::ex>& b);
 
+/// (IV.3.15 on the imaginary axis) H(i w) = q(i w)/p(i w) of the analog system as a gain and a
+/// phase, real expressions in the real frequency w: gain = |H(i w)| = sqrt(|q|^2/|p|^2),
+/// phase = atan2(Im H, Re H). For plots of the filter along the frequency axis.
+struct frequency_response {
+    GiNaC::ex gain, phase;
+};
+frequency_response frequency_response_of(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b,
+                                         const GiNaC::ex& w);
+
 struct system_response {
     std::string kind;       ///< "passed", "partially filtered", "filtered out" or "resonant"
     GiNaC::ex particular;   ///< in the input's class (IV.3.16); resonant: the zero-state response

@@ -1,6 +1,7 @@
 // symrep/transforms/laplace.cpp -- see laplace.h.
 #include "transforms/laplace.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "algebra/polynomial_algebra.h"
@@ -131,6 +132,8 @@ algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, 
             for (const ex& m : mus) seen = seen || is_zero_scalar(tidy(m - e.lambda));
             if (!seen) mus.push_back(e.lambda);
         }
+    // in the order of their printed forms: the report does not depend on GiNaC's term order
+    std::sort(mus.begin(), mus.end(), [](const ex& x, const ex& y) { return text(x) < text(y); });
     out.converges = truth::yes;
     std::string conditions;
     for (const auto& r : signals::exponents_of(f, t))
