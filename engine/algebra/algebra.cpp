@@ -59,6 +59,8 @@ coeffs algebra::power(const coeffs& w, unsigned long k) const {
     return result;
 }
 
+bool algebra::is_power_basis_generator(const coeffs&) const { return false; }
+
 coeffs algebra::evaluate_polynomial(const ex& p, const GiNaC::symbol& X, const coeffs& w) const {
     check_size(w, "polynomial evaluation");
     ex q = GiNaC::expand(p);
@@ -69,6 +71,11 @@ coeffs algebra::evaluate_polynomial(const ex& p, const GiNaC::symbol& X, const c
         throw type_error(os.str());
     }
     const int deg = q.degree(X);
+    if (deg < int(dim()) && is_power_basis_generator(w)) {  // the coordinates are the coefficients
+        coeffs out(dim(), ex(0));
+        for (int k = 0; k <= deg; ++k) out[std::size_t(k)] = tidy(q.coeff(X, k));
+        return out;
+    }
     if (GiNaC::is_a<GiNaC::add>(q) ? int(q.nops()) * 8 < deg : deg > 8) {
         // sparse (x^100000 + 1): sum c_k w^k with powers by squaring, not deg Horner steps
         coeffs acc = zero();

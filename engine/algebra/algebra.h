@@ -131,6 +131,10 @@ public:
     coeffs power(const coeffs& w, unsigned long k) const;
     /// p(w) for a polynomial p in X (Horner).
     coeffs evaluate_polynomial(const GiNaC::ex& p, const GiNaC::symbol& X, const coeffs& w) const;
+    /// True when the basis is 1, w, w^2, ..., w^(dim-1) (the polynomial algebras' generator v):
+    /// then a polynomial of degree < dim evaluated at w has its coefficients as coordinates,
+    /// and evaluate_polynomial reads them off instead of running Horner's scheme.
+    virtual bool is_power_basis_generator(const coeffs& w) const;
     /// Exact equality of coordinate vectors (each difference normalizes to 0).
     static bool equal(const coeffs& a, const coeffs& b);
     /// Checks that a vector has dim() entries; throws algebra_error otherwise.

@@ -133,4 +133,11 @@ ex polynomial_algebra::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     return algebra::minpoly(w, X);
 }
 
+bool polynomial_algebra::is_power_basis_generator(const coeffs& w) const {
+    if (w.size() != dim() || dim() < 2) return false;
+    for (std::size_t i = 0; i < w.size(); ++i)
+        if (!(i == 1 ? w[i].is_equal(1) : w[i].is_zero())) return false;
+    return true;
+}
+
 }  // namespace symrep

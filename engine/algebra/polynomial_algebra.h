@@ -45,6 +45,8 @@ public:
     const GiNaC::ex& variable() const { return X_; }
     /// Coordinates of v (for n = 1, v = -a_1 times the unit).
     coeffs generator() const;
+    /// w == generator(): the basis 1, v, ..., v^(n-1) is the power basis of v.
+    bool is_power_basis_generator(const coeffs& w) const override;
     /// (II.1 completion) the Frobenius matrix of p.
     GiNaC::matrix frobenius_matrix() const;
 
