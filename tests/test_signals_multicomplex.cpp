@@ -16,6 +16,7 @@
 #include "scalar/scalar.h"
 #include "signals/multicomplex_signals.h"
 #include "signals/representation.h"
+#include "signals/response.h"
 
 using namespace symrep;
 using namespace symrep::signals;
@@ -259,4 +260,28 @@ TEST(SobreroSignals, RepresentationModulationAndSpecialType) {
     EXPECT_TRUE(S->is_zero_divisor(zd));
     EXPECT_LE(annihilator(signal_of(R, zd, t), t, X).degree(X), int(2 * n));
     EXPECT_EQ(annihilator(f, t, X).degree(X), int(2 * (n + 1)));
+}
+
+// (IV.3.2 cases c, d, a, b, e over multicomplex(1), d = 3 i0 + i1, Omega = 4, 2): responses
+// derived on the algebra, each substituted into the system by respond_over itself.
+TEST(MulticomplexSignals, FilterCasesCAndD) {
+    const auto A = multicomplex::make(1);
+    const coeffs d = carrier_element(*A, {3, 1});
+    // c: x'' + 10 x = cos 3t cos t: |H(4i)| = |H(2i)| = 1/6, the response stays amplitude-modulated
+    const auto c = signals::respond_over(A, d, {1, 0, 10}, {1}, GiNaC::cos(3 * t) * GiNaC::cos(t), t);
+    EXPECT_EQ(c.kind, "not distorted") << c.report;
+    EXPECT_TRUE(same_function(c.particular, GiNaC::sin(3 * t) * GiNaC::sin(t) / 6));
+    // d: x'' + 12 x = cos 4t + 2 cos 2t (not amplitude-modulated): H = -1/4, 1/8 evens the moduli out
+    const auto e = signals::respond_over(A, d, {1, 0, 12}, {1}, GiNaC::cos(4 * t) + 2 * GiNaC::cos(2 * t), t);
+    EXPECT_EQ(e.kind, "corrected") << e.report;
+    EXPECT_EQ(amplitude_modulated(*A, e.element).holds, truth::yes);
+    // distorted: x' + x = cos 3t cos t (|H| differs at 4 and 2)
+    EXPECT_EQ(signals::respond_over(A, d, {1, 1}, {1}, GiNaC::cos(3 * t) * GiNaC::cos(t), t).kind, "distorted");
+    // a notch at 4 (q = D^2 + 16): cos 4t filtered out; cos 4t + cos 2t loses one mode (b)
+    EXPECT_EQ(signals::respond_over(A, d, {1, 0, 0, 1}, {1, 0, 16}, GiNaC::cos(4 * t), t).kind, "filtered out");
+    const auto b = signals::respond_over(A, d, {1, 0, 0, 1}, {1, 0, 16}, GiNaC::cos(4 * t) + GiNaC::cos(2 * t), t);
+    EXPECT_NE(b.report.find("case b"), std::string::npos) << b.report;
+    // e: p(d) a zero divisor
+    EXPECT_THROW(signals::respond_over(A, d, {1, 0, 16}, {1}, GiNaC::cos(4 * t), t), symrep::zero_divisor_error);
+    EXPECT_THROW(signals::respond_over(A, d, {1, 0}, {1, 0}, GiNaC::cos(4 * t), t), symrep::domain_error);
 }

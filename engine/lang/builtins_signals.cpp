@@ -143,6 +143,25 @@ void register_signals_builtins(registry& r) {
             return element(d.parent_ptr(), signals::transmittance(d.parent(), d.coefficients(), as, bs));
         });
     add_builtin(
+        r, section, "response_over", "response_over(a, b, f, t, d)",
+        "The particular response x = Psi^-1[H(d) Psi(f)] of a_0 x^(m) + ... + a_m x = b_0 f^(p) + ... + b_p f on the "
+        "algebra of d (f must solve q(D) f = 0, q the minimal polynomial of d): [x, H(d) Psi(f), report], x "
+        "substituted into the system. The report names the case of IV.3.2: filtered out (a), partially filtered "
+        "(b), and on a multicomplex algebra not distorted (c: Psi(f) and H(d) of special type, the response "
+        "amplitude-modulated like the input), corrected (d: the response of special type, the input not) or "
+        "distorted; p(d) a zero divisor (e, resonance) is an error.",
+        "(IV.3.13-16), IV.3.2 a-e", "response_over([1, 0, 10], [1], cos(3*t)*cos(t), t, 3*imag_unit(multicomplex(1), "
+        "0) + imag_unit(multicomplex(1), 1))", 5, 5,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const std::vector<GiNaC::ex> as = arg_ex_list(a, 0, b), bs = arg_ex_list(a, 1, b);
+            const element& d = arg_element(a, 4, b);
+            if (as.empty() || bs.empty())
+                throw type_error(b.name + ": the lists a and b must not be empty (usage: " + b.signature + ")");
+            const auto x = signals::respond_over(d.parent_ptr(), d.coefficients(), as, bs, arg_ex(a, 2, b),
+                                                 arg_symbol(a, 3, b));
+            return list{value(x.particular), value(element(d.parent_ptr(), x.element)), value(x.report)};
+        });
+    add_builtin(
         r, section, "frequency_response", "frequency_response(a, b, w)",
         "The transmittance of a_0 x^(m) + ... + a_m x = b_0 f^(p) + ... + b_p f on the imaginary axis, "
         "H(i w) = q(i w)/p(i w), as [gain, phase]: gain = |H(i w)|, phase = atan2(Im H, Re H), real expressions "

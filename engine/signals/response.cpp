@@ -4,6 +4,8 @@
 #include "core/error.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
+#include "algebra/multicomplex.h"
+#include "signals/multicomplex_signals.h"
 #include "signals/representation.h"
 
 namespace symrep::signals {
@@ -249,6 +251,68 @@ frequency_response frequency_response_of(const std::vector<ex>& a, const std::ve
     // H = q conj(p) / |p|^2
     r.phase = GiNaC::atan2(tidy((qi * pr - qr * pi).expand()), tidy((qr * pr + qi * pi).expand()));
     return r;
+}
+
+algebra_response respond_over(const algebra_ptr& A, const coeffs& d, const std::vector<ex>& a,
+                              const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t) {
+    if (a.size() <= b.size())
+        throw domain_error("response: the system is not causal (m = " + std::to_string(a.size() - 1) +
+                           " <= p = " + std::to_string(b.size() - 1) + ")");
+    const representation R = represent_on(A, d);
+    const coeffs w = element_of(R, f, t);
+    const coeffs H = transmittance(*A, d, a, b);  // zero_divisor_error: case e
+    algebra_response out;
+    out.element = A->multiply(H, w);
+    for (ex& x : out.element) x = tidy(x);
+    out.particular = algebra::equal(out.element, A->zero()) ? ex(0) : signal_of(R, out.element, t);
+    // the response substituted back: p(D) x = q(D) f
+    const GiNaC::symbol l("l");
+    const ex residual = tidy(GiNaC::expand(apply_operator(system_polynomial(a, l), l, out.particular, t) -
+                                           apply_operator(system_polynomial(b, l), l, f, t)));
+    if (!is_zero_scalar(residual)) {
+        const zero_decision z = decide_zero(residual);
+        if (z.is_zero != truth::yes)
+            throw algebra_error("response: the response does not satisfy the system (residual " +
+                                message_text(residual, 200) + (z.is_zero == truth::no ? ")" : ", not proved 0)"));
+    }
+    if (algebra::equal(out.element, A->zero())) {
+        out.kind = "filtered out";
+        out.report = "filtered out: H(d) Psi(f) = 0, the response is 0 (case a of IV.3.2)";
+        return out;
+    }
+    const GiNaC::symbol X("X");
+    const int order_in = annihilator(f, t, X).degree(X), order_out = annihilator(out.particular, t, X).degree(X);
+    if (const auto* M = dynamic_cast<const multicomplex*>(A.get())) {
+        const truth in = amplitude_modulated(*M, w).holds, h = amplitude_modulated(*M, H).holds,
+                    y = amplitude_modulated(*M, out.element).holds;
+        if (in == truth::yes && h == truth::yes) {
+            out.kind = "not distorted";
+            out.report = "not distorted: Psi(f) and H(d) are of special type, so is their product: the response is "
+                         "amplitude-modulated on the same carriers as the input (case c of IV.3.2)";
+        } else if (in == truth::no && y == truth::yes) {
+            out.kind = "corrected";
+            out.report = "corrected: Psi(f) is not of special type but H(d) Psi(f) is, so the system removes the "
+                         "input's phase modulation (case d of IV.3.2)";
+        } else if (in == truth::yes && y == truth::no) {
+            out.kind = "distorted";
+            out.report = "distorted: the input is amplitude-modulated (Psi(f) of special type) and the response is not";
+        }
+        if (!out.kind.empty()) {
+            if (order_out < order_in)
+                out.report += "; also partially filtered: order " + std::to_string(order_out) + " < " +
+                              std::to_string(order_in) + " (case b)";
+            return out;
+        }
+    }
+    if (order_out < order_in) {
+        out.kind = "partially filtered";
+        out.report = "partially filtered: the response satisfies an equation of order " + std::to_string(order_out) +
+                     " < " + std::to_string(order_in) + ", the order of the input's (case b of IV.3.2)";
+    } else {
+        out.kind = "passed";
+        out.report = "passed: x = Psi^-1[H(d) Psi(f)] on " + A->name() + " (IV.3.16)";
+    }
+    return out;
 }
 
 system_response respond(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t) {

@@ -63,6 +63,22 @@ struct system_response {
 system_response respond(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b, const GiNaC::ex& f,
                         const GiNaC::symbol& t);
 
+/// (IV.3.13-16, cases a-e of IV.3.2 on any algebra) The particular response x = Psi^-1[H(d) Psi(f)]
+/// on the algebra of d (a multicomplex algebra for cases c-d), the input f solving q(D) f = 0 for q the
+/// minimal polynomial of d. kind: "filtered out" (a: H(d) Psi(f) = 0), "partially filtered" (b: the
+/// response's least equation has lower order than the input's), "not distorted" (c: Psi(f) and H(d)
+/// of special type, IV.1.57, so the response is amplitude-modulated like the input), "corrected" (d:
+/// Psi(f) not of special type, H(d) Psi(f) of special type), "distorted" (the input of special type,
+/// the response not), or "passed". p(d) a zero divisor (case e) is a zero_divisor_error from
+/// transmittance(). The response is substituted into the system before it is returned.
+struct algebra_response {
+    coeffs element;        ///< H(d) Psi(f)
+    GiNaC::ex particular;  ///< its signal
+    std::string kind, report;
+};
+algebra_response respond_over(const algebra_ptr& A, const coeffs& d, const std::vector<GiNaC::ex>& a,
+                              const std::vector<GiNaC::ex>& b, const GiNaC::ex& f, const GiNaC::symbol& t);
+
 /// The same for a digital system (IV.3.7 with the shift: a_0 x(k+m) + ... + a_m x(k) =
 /// b_0 f(k+p) + ... + b_p f(k)) and a sequence f(k) in closed form (sequence_annihilator):
 /// the same algebra, Psi_d^-1(w) = lambda(w v^k), zero state x(0) = ... = x(m-1) = 0 (IV.3.19).

@@ -40,10 +40,10 @@ rational proper_rational(const ex& F, const GiNaC::symbol& s, const GiNaC::symbo
     const ex nd = GiNaC::normal(F).numer_denom();
     const ex num = nd.op(0).expand(), den = nd.op(1).expand();
     if (!num.is_polynomial(s) || !den.is_polynomial(s))
-        throw domain_error("inverse_laplace: " + text(F) + " is not a rational function of " + text(s) +
+        throw domain_error("inverse_laplace: F is not a rational function of " + text(s) +
                            " (only those are transforms of quasi-polynomials)");
     if (den.degree(s) < 1 || num.degree(s) >= den.degree(s))
-        throw domain_error("inverse_laplace: " + text(F) + " is not proper (numerator of degree " +
+        throw domain_error("inverse_laplace: F is not proper (numerator of degree " +
                            std::to_string(num.degree(s)) + ", denominator of degree " +
                            std::to_string(den.degree(s)) +
                            "): its polynomial part is the transform of derivatives of the Dirac delta, not of a signal");
