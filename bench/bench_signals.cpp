@@ -2,7 +2,8 @@
 // "Signals and transforms"): a system of order m = 4, 8, 12 with a quasi-polynomial
 // input (the response with its classification and the zero-state response, every
 // result substituted back), the transmittance and sampling on the input's algebra, and
-// the Laplace transform with its check.
+// the Laplace transform with its check, and the inputs of the SymPy side-by-side
+// (bench/signals/sympy_transforms.py): inverse Laplace, Fibonacci, a geometric recurrence.
 //
 //   ./build/symrep_bench --benchmark_filter=Signals --benchmark_repetitions=3
 //       --benchmark_report_aggregates_only=true   (one line)
@@ -54,8 +55,31 @@ void BM_Signals_Laplace(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(transforms::laplace(input, t, s));
 }
 
+// The inputs of bench/signals/sympy_transforms.py (the side-by-side with SymPy).
+void BM_Signals_InverseLaplace(benchmark::State& state) {
+    const ex F = transforms::laplace(input, t, s);
+    for (auto _ : state) benchmark::DoNotOptimize(transforms::inverse_laplace(F, s, t));
+}
+
+void BM_Signals_FibonacciFormula(benchmark::State& state) {
+    const GiNaC::symbol k("k");
+    for (auto _ : state) {
+        const auto R = signals::polynomial_representation(X * X - X - 1, X);
+        benchmark::DoNotOptimize(signals::sequence_formula(R, R.d, k));
+    }
+}
+
+void BM_Signals_GeometricRecurrence(benchmark::State& state) {
+    const GiNaC::symbol k("k");
+    for (auto _ : state)
+        benchmark::DoNotOptimize(signals::respond_discrete({1, ex(-1) / 2}, {1}, ex(1), k));
+}
+
 }  // namespace
 
+BENCHMARK(BM_Signals_InverseLaplace)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Signals_FibonacciFormula)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Signals_GeometricRecurrence)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Signals_Response)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Signals_Transmittance)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Signals_Sampling)->Unit(benchmark::kMillisecond);
