@@ -12,6 +12,7 @@
 #include "algebra/sobrero.h"
 #include "core/error.h"
 #include "scalar/scalar.h"
+#include "signals/multicomplex_signals.h"
 #include "signals/response.h"
 #include "transforms/laplace.h"
 #include "transforms/sampled.h"
@@ -227,4 +228,24 @@ TEST(Transforms, LinearityAndModulation) {
     EXPECT_TRUE(same_element(transform_of(A, d, GiNaC::exp(-2 * t) * f), transform_of(A, shifted, f)));
     EXPECT_TRUE(same_element(transform_of(A, d, 7 * f + g),
                              A->add(A->scale(7, transform_of(A, d, f)), transform_of(A, d, g))));
+}
+
+// (Thm V.2.5, V.2.52-53) the transmittance over the multicomplex algebra is the transform of
+// the weighting function h (the impulse response, Lh = H = q/p): H(d) = T h, and its
+// idempotent components are H(i Omega_p); V.2.61-64: the response to an amplitude-modulated
+// input keeps pure amplitude modulation exactly when H(d) is of special type.
+TEST(Transforms, TransmittanceIsTheTransformOfTheWeightingFunction) {
+    const auto A = multicomplex::make(2);
+    coeffs d(A->dim(), ex(0));
+    const std::vector<ex> omega{3, 1, ex(1) / 2};
+    for (unsigned k = 0; k <= 2; ++k) d = A->add(d, A->scale(omega[k], A->imag_unit(k)));
+    const std::vector<ex> a{1, 2, 5}, b{1, 3};
+    const ex H = (s + 3) / (s * s + 2 * s + 5);
+    const ex h = inverse_laplace(H, s, t);
+    const coeffs Hd = signals::transmittance(*A, d, a, b);
+    EXPECT_TRUE(same_element(transform_of(A, d, h), Hd));
+    const std::vector<ex> z = A->idempotent_components(Hd), dz = A->idempotent_components(d);
+    for (std::size_t p = 0; p < z.size(); ++p) EXPECT_TRUE(same(z[p], H.subs(s == dz[p]))) << p;
+    // |H(i Omega_p)| are not all equal: H(d) is not of special type (V.2.61 fails)
+    EXPECT_EQ(signals::amplitude_modulated(*A, Hd).holds, truth::no);
 }
