@@ -7,6 +7,7 @@
 #include "algebra/structure_algebra.h"
 #include "core/error.h"
 #include "scalar/scalar.h"
+#include "signals/product.h"
 #include "signals/representation.h"
 
 using namespace symrep;
@@ -145,4 +146,27 @@ TEST(Signals, SamplingAndAliasing) {
     // roots not in radicals: not decided, never guessed
     EXPECT_EQ(sample(polynomial_representation(GiNaC::pow(X, 3) - 2, X), 1, l).aliasing, truth::unknown);
     EXPECT_THROW(sample(R, 0, l), domain_error);
+}
+
+// Products of signals (signals/product.h): Psi(f g) = Psi(f) (x) Psi(g) on A (x) B with
+// d = d_A (x) 1 + 1 (x) d_B and lambda_A (x) lambda_B; the derivative is the product by d
+// (Leibniz), also where d does not generate A (x) B (cos t cos t).
+TEST(Signals, ProductsOnTheTensorProduct) {
+    const std::vector<std::pair<ex, ex>> pairs{{t * GiNaC::exp(-t), GiNaC::sin(2 * t)},
+                                               {GiNaC::cos(t), GiNaC::cos(t)},
+                                               {GiNaC::exp(-2 * t) + 1, t * t}};
+    for (const auto& [f, g] : pairs) {
+        const auto RA = polynomial_representation(annihilator(f, t, X), X);
+        const auto RB = polynomial_representation(annihilator(g, t, X), X);
+        const auto R = product_representation(RA, RB);
+        EXPECT_EQ(R.A->dim(), RA.A->dim() * RB.A->dim());
+        const coeffs w = tensor(element_of(RA, f, t), element_of(RB, g, t));
+        EXPECT_TRUE(same(signal_of(R, w, t), f * g)) << f << " * " << g;
+        EXPECT_TRUE(same(signal_of(R, R.A->multiply(R.d, w), t), (f * g).diff(t))) << f << " * " << g;
+        // the same through represent_on (the language's signal(w, t, d))
+        EXPECT_TRUE(same(signal_of(represent_on(R.A, R.d), w, t), f * g));
+    }
+    const auto C = polynomial_representation(X * X + 1, X);
+    const auto CC = product_representation(C, C);
+    EXPECT_EQ(CC.p.degree(CC.X), 3);  // exponents 2i, 0, -2i: d does not generate
 }

@@ -9,6 +9,7 @@
 #include "lang/builtins.h"
 #include "algebra/multicomplex.h"
 #include "signals/modulation.h"
+#include "signals/product.h"
 #include "signals/multicomplex_signals.h"
 #include "signals/representation.h"
 #include "signals/response.h"
@@ -77,6 +78,23 @@ void register_signals_builtins(registry& r) {
         "Thm II.1.1, Thm II.2.3", "represent(t*exp(-t), t)", 2, 3,
         [](const builtin& b, const std::vector<value>& a, context& ctx) -> value {
             return represent_signal(a, ctx, b, false);
+        });
+    add_builtin(
+        r, section, "represent_product", "represent_product(f, g, t)",
+        "The product f g of two quasi-polynomial signals on the tensor product of their least algebras: "
+        "[w, d] with w = Psi(f) (x) Psi(g) on P_r (x) P_s and d = v (x) 1 + 1 (x) v, so that signal(w, t, d) = f g "
+        "and signal(d*w, t, d) = (f g)' (Leibniz's rule as the product by d); lambda = lambda_A (x) lambda_B.",
+        "Thm II.1.1, Thm II.2.3 (products)", "represent_product(exp(-t), cos(t), t)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const GiNaC::ex& f = arg_ex(a, 0, b);
+            const GiNaC::ex& g = arg_ex(a, 1, b);
+            const GiNaC::symbol& t = arg_symbol(a, 2, b);
+            const GiNaC::symbol X("X");
+            const auto RA = signals::polynomial_representation(signals::annihilator(f, t, X), X);
+            const auto RB = signals::polynomial_representation(signals::annihilator(g, t, X), X);
+            const auto R = signals::product_representation(RA, RB);
+            const coeffs w = signals::tensor(signals::element_of(RA, f, t), signals::element_of(RB, g, t));
+            return list{value(element(R.A, w)), value(element(R.A, R.d))};
         });
     add_builtin(
         r, section, "signal", "signal(w, t [, d])",

@@ -13,6 +13,7 @@
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "signals/multicomplex_signals.h"
+#include "signals/product.h"
 
 namespace symrep::signals {
 
@@ -73,6 +74,18 @@ std::string polynomial_text(const ex& p, const GiNaC::symbol& X) {
 // (Thm II.1.1, Cor. II.1.1)
 representation represent_on(algebra_ptr A, const coeffs& d) {
     A->check_size(d, "representation");
+    // a product of signals (signals/product.h): its own functional, d need not generate
+    if (const auto* T = dynamic_cast<const tensor_algebra*>(A.get())) {
+        if (!algebra::equal(d, T->operator_d()))
+            throw algebra_error("signals: on " + A->name() + " the operator is d_A (x) 1 + 1 (x) d_B, "
+                                "the one of the product representation");
+        representation R;
+        R.A = A;
+        R.d = d;
+        R.p = A->minpoly(d, R.X);
+        R.lambda = T->functional();
+        return R;
+    }
     representation R;
     R.A = A;
     R.d = d;
