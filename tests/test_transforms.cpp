@@ -249,3 +249,31 @@ TEST(Transforms, TransmittanceIsTheTransformOfTheWeightingFunction) {
     // |H(i Omega_p)| are not all equal: H(d) is not of special type (V.2.61 fails)
     EXPECT_EQ(signals::amplitude_modulated(*A, Hd).holds, truth::no);
 }
+
+// (Thm V.2.4, V.2.42) Parseval: the energy int_0^oo f^2 dt = L[f^2](0) (exact) equals
+// (1/2 pi) int |F(i w)|^2 dw, integrated numerically with w = tan(u) over (-pi/2, pi/2)
+// (Gauss-Kronrod; |F|^2 ~ 1/w^2, so the integrand stays bounded): 1e-12 relative.
+TEST(Transforms, ParsevalEnergy) {
+    const GiNaC::realsymbol u("u"), om("om");
+    for (const ex& f : {ex(GiNaC::exp(-t) * GiNaC::cos(3 * t)), ex(t * GiNaC::exp(-2 * t) + GiNaC::exp(-t / 2)),
+                        ex(GiNaC::exp(-t) * (GiNaC::sin(t) + 2 * GiNaC::cos(5 * t)))}) {
+        const ex E = energy(f, t);
+        const ex F = laplace(f, t, s);
+        const ex nd = GiNaC::normal(F).numer_denom();
+        const auto at = [&](const ex& x, int sign) { return x.subs(s == sign * GiNaC::I * om); };
+        // |F(i w)|^2 = N(i w) N(-i w) / (D(i w) D(-i w)), both real polynomials in w
+        const ex modulus2 = GiNaC::expand(at(nd.op(0), 1) * at(nd.op(0), -1)) /
+                            GiNaC::expand(at(nd.op(1), 1) * at(nd.op(1), -1));
+        const ex integrand = (modulus2.subs(om == GiNaC::tan(u)) / GiNaC::pow(GiNaC::cos(u), 2)) / (2 * GiNaC::Pi);
+        // the endpoints themselves are cut (tan is infinite there); near them the integrand tends to
+        // lim w^2 |F(i w)|^2 / 2 pi = f(0)^2 / 2 pi (F ~ f(0)/s), so the two cut ends hold
+        // eps f(0)^2 / pi, added back (the next term is O(eps^3))
+        const double eps = 1e-10;
+        const double f0 = GiNaC::ex_to<GiNaC::numeric>(f.subs(t == 0).evalf()).to_double();
+        const double q = num::integrate_numerically(u, -M_PI / 2 + eps, M_PI / 2 - eps, integrand) + eps * f0 * f0 / M_PI;
+        const double e = GiNaC::ex_to<GiNaC::numeric>(E.evalf()).to_double();
+        EXPECT_NEAR(q, e, 1e-12 * e) << f;
+    }
+    EXPECT_THROW(energy(GiNaC::cos(t), t), symrep::domain_error);
+    EXPECT_TRUE(same(energy(GiNaC::exp(-a * t), t), 1 / (2 * a)));
+}

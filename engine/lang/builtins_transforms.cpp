@@ -34,6 +34,15 @@ void register_transforms_builtins(registry& r) {
             return transforms::inverse_laplace(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_symbol(a, 2, b));
         });
     add_builtin(
+        r, section, "energy", "energy(f, t)",
+        "The energy int_0^oo f(t)^2 dt of a causal quasi-polynomial signal, exact: L[f^2](0). By Parseval (Thm "
+        "V.2.4) it equals (1/2 pi) int |F(i w)|^2 dw, and over the multicomplex algebra the norm of the transform "
+        "(V.2.42, V.2.49). An error when the integral diverges.",
+        "(V.2.42), Thm V.2.4", "energy(exp(-t)*cos(3*t), t)", 2, 2,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return transforms::energy(arg_ex(a, 0, b), arg_symbol(a, 1, b));
+        });
+    add_builtin(
         r, section, "transform", "transform(f, t, d)",
         "T f(d) = int_0^oo f(t) e^(-d t) dt for a causal quasi-polynomial f and an element d of any algebra: "
         "[q(d) p(d)^-1, report], Lf = q/p. Over multicomplex(n) with d = omega_0 i0 + ... + omega_n in it is the "

@@ -91,6 +91,26 @@ ex inverse_laplace(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) 
     return f;
 }
 
+ex energy(const ex& f, const GiNaC::symbol& t) {
+    const ex f2 = tidy(GiNaC::expand(f * f));
+    if (f2.is_zero()) return 0;
+    std::string bad;  // the first by printed form: the message does not depend on GiNaC's term order
+    for (const auto& e : signals::exponents_of(f2, t)) {
+        const ex re = real_part_of(e.lambda);
+        GiNaC::numeric v;
+        if (is_zero_scalar(re) ||
+            (GiNaC::is_a<GiNaC::numeric>(re.evalf()) && evaluate_numeric(re, 40, v) && v.is_real() && v > 0)) {
+            const std::string x = text(e.lambda);
+            if (bad.empty() || x < bad) bad = x;
+        }
+    }
+    if (!bad.empty())
+        throw domain_error("energy: the integral of f^2 diverges (f^2 has the exponent " + bad +
+                           ", whose real part is not negative)");
+    const GiNaC::symbol s("s");
+    return tidy(laplace_raw(f2, t, s).subs(s == 0));
+}
+
 algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, const GiNaC::symbol& t) {
     A->check_size(d, "transform");
     algebra_transform out;
