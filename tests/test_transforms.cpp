@@ -277,3 +277,25 @@ TEST(Transforms, ParsevalEnergy) {
     EXPECT_THROW(energy(GiNaC::cos(t), t), symrep::domain_error);
     EXPECT_TRUE(same(energy(GiNaC::exp(-a * t), t), 1 / (2 * a)));
 }
+
+// (V.2.11 over the whole line) two-sided signals: e^(-|t|) has the Fourier transform
+// 2/(1 + w^2), so its transform over multicomplex(1) has the components 2/(1 + Omega_p^2);
+// a two-sided signal that grows on one side is reported divergent; the derivative rule
+// T(F') = d T F holds without the f(0) term when F is continuous at 0.
+TEST(Transforms, TwoSidedSignals) {
+    const auto A = multicomplex::make(1);
+    const coeffs d = A->add(A->scale(3, A->imag_unit(0)), A->imag_unit(1));
+    const auto T = transform_two_sided(A, d, GiNaC::exp(-t), GiNaC::exp(t), t);
+    EXPECT_EQ(T.converges, truth::yes) << T.report;
+    const std::vector<ex> z = A->idempotent_components(T.value), dz = A->idempotent_components(d);
+    for (std::size_t p = 0; p < z.size(); ++p) {
+        const ex Omega = tidy(GiNaC::imag_part(dz[p]));
+        EXPECT_TRUE(same(z[p], 2 / (1 + Omega * Omega))) << p;
+    }
+    EXPECT_EQ(transform_two_sided(A, d, GiNaC::exp(-t), GiNaC::exp(-t), t).converges, truth::no);
+    // F = t e^(-|t|) is continuous at 0 (F(0) = 0): T(F') = d T F
+    const ex f = t * GiNaC::exp(-t), g = t * GiNaC::exp(t);
+    const coeffs TF = transform_two_sided(A, d, f, g, t).value;
+    const coeffs TdF = transform_two_sided(A, d, f.diff(t), g.diff(t), t).value;
+    EXPECT_TRUE(same_element(TdF, A->multiply(d, TF)));
+}

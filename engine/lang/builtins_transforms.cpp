@@ -43,20 +43,24 @@ void register_transforms_builtins(registry& r) {
             return transforms::energy(arg_ex(a, 0, b), arg_symbol(a, 1, b));
         });
     add_builtin(
-        r, section, "transform", "transform(f, t, d)",
+        r, section, "transform", "transform(f, t, d [, g])",
         "T f(d) = int_0^oo f(t) e^(-d t) dt for a causal quasi-polynomial f and an element d of any algebra: "
         "[q(d) p(d)^-1, report], Lf = q/p. Over multicomplex(n) with d = omega_0 i0 + ... + omega_n in it is the "
         "Fourier-type transform of V.2 (idempotent components F(i Omega_p), V.2.27); over sobrero(n) with "
         "d = s + eps it is the Laplace-type transform sum_k eps^k/k! d^k/ds^k Lf(s) of V.3. The report says whether "
         "the integral converges (Re r < Re mu for the exponents r of f and the eigenvalues mu of d), does not (the "
-        "value is then the analytic continuation), or under which condition on the parameters.",
+        "value is then the analytic continuation), or under which condition on the parameters. With g: the "
+        "two-sided transform int_-oo^oo of the signal that is f for t >= 0 and g for t < 0 (V.2.11 over the whole "
+        "line): T f(d) + T[g(-u)](-d); e^(-|t|) is f = exp(-t), g = exp(t).",
         "(V.1.5, V.2.11, V.2.27-29, V.3)", "transform(exp(-t), t, 2*imag_unit(multicomplex(1), 0) + "
-        "imag_unit(multicomplex(1), 1))", 3, 3,
+        "imag_unit(multicomplex(1), 1))", 3, 4,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
             const GiNaC::ex& f = arg_ex(a, 0, b);
             const GiNaC::symbol& t = arg_symbol(a, 1, b);
             const element& d = arg_element(a, 2, b);
-            const auto x = transforms::transform(d.parent_ptr(), d.coefficients(), f, t);
+            const auto x = a.size() > 3
+                               ? transforms::transform_two_sided(d.parent_ptr(), d.coefficients(), f, arg_ex(a, 3, b), t)
+                               : transforms::transform(d.parent_ptr(), d.coefficients(), f, t);
             return list{value(element(d.parent_ptr(), x.value)), value(x.report)};
         });
 }

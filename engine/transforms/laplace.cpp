@@ -180,4 +180,21 @@ algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, 
     return out;
 }
 
+algebra_transform transform_two_sided(const algebra_ptr& A, const coeffs& d, const ex& f, const ex& g,
+                                      const GiNaC::symbol& t) {
+    const algebra_transform right = transform(A, d, f, t);
+    const algebra_transform left = transform(A, algebra::scale(-1, d), g.subs(t == -t), t);
+    algebra_transform out;
+    out.value = algebra::add(right.value, left.value);
+    for (ex& x : out.value) x = tidy(x);
+    if (right.converges == truth::no || left.converges == truth::no)
+        out.converges = truth::no;
+    else if (right.converges == truth::yes && left.converges == truth::yes)
+        out.converges = truth::yes;
+    else
+        out.converges = truth::unknown;
+    out.report = "t >= 0: " + right.report + "; t < 0 (g(-u) at -d): " + left.report;
+    return out;
+}
+
 }  // namespace symrep::transforms

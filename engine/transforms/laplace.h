@@ -56,4 +56,12 @@ struct algebra_transform {
 };
 algebra_transform transform(const algebra_ptr& A, const coeffs& d, const GiNaC::ex& f, const GiNaC::symbol& t);
 
+/// (V.2.11 over the whole line) int_-oo^oo F(t) e^(-d t) dt for F = f on t >= 0 and g on t < 0
+/// (both quasi-polynomials): T f(d) + T[g(-u)](-d), the second part the causal transform of the
+/// mirrored signal at -d. Converges when both parts do (the reports are joined). e^(-|t|) is
+/// f = e^(-t), g = e^(t); its Fourier-type transform over the multicomplex algebra has the
+/// idempotent components 2/(1 + Omega_p^2).
+algebra_transform transform_two_sided(const algebra_ptr& A, const coeffs& d, const GiNaC::ex& f, const GiNaC::ex& g,
+                                      const GiNaC::symbol& t);
+
 }  // namespace symrep::transforms
