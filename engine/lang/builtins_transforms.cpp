@@ -4,7 +4,9 @@
 #include <vector>
 
 #include "lang/builtins.h"
+#include "core/error.h"
 #include "transforms/laplace.h"
+#include "transforms/sampled.h"
 
 namespace symrep::lang {
 
@@ -32,6 +34,37 @@ void register_transforms_builtins(registry& r) {
         "(V.1.4), Thm II.1.1", "inverse_laplace(1/(s^2 + 2*s + 5), s, t)", 3, 3,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
             return transforms::inverse_laplace(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_symbol(a, 2, b));
+        });
+    add_builtin(
+        r, section, "sampled_fourier", "sampled_fourier(samples, h)",
+        "The Fourier transform of a causal signal from its samples f(k h), k = 0 .. N-1, by one FFT (Eigen): the "
+        "list of [omega_m, F(i omega_m)] for omega_m = 2 pi m / (N h), m = 0 .. floor(N/2) (the trapezoid rule "
+        "h (sum_k f_k e^(-i omega_m k h) - f_0/2); error O(h^2) plus the signal beyond N h). Compare with "
+        "laplace(f, t, I*omega) for a signal in closed form.",
+        "(V.1.1, V.2.26)", "sampled_fourier([1, 0.5, 0.25, 0.125], 1)", 2, 2,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const std::vector<GiNaC::ex> xs = arg_ex_list(a, 0, b);
+            const GiNaC::ex& he = arg_ex(a, 1, b);
+            const GiNaC::ex hv = he.evalf();
+            if (!GiNaC::is_a<GiNaC::numeric>(hv) || !GiNaC::ex_to<GiNaC::numeric>(hv).is_real())
+                throw type_error(b.name + ": the step h must be a real number (usage: " + b.signature + ")");
+            std::vector<double> samples;
+            for (std::size_t k = 0; k < xs.size(); ++k) {
+                const GiNaC::ex v = xs[k].evalf();
+                if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+                    throw type_error(b.name + ": sample " + std::to_string(k + 1) + " is not a real number");
+                samples.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
+            }
+            const double h = GiNaC::ex_to<GiNaC::numeric>(hv).to_double();
+            const auto F = transforms::sampled_fourier(samples, h);
+            list out;
+            for (std::size_t m = 0; m <= samples.size() / 2; ++m) {
+                const double omega = 2 * 3.14159265358979323846 * double(m) / (double(samples.size()) * h);
+                out.push_back(value(list{value(GiNaC::ex(GiNaC::numeric(omega))),
+                                         value(GiNaC::ex(GiNaC::numeric(F[m].real()) +
+                                                         GiNaC::I * GiNaC::numeric(F[m].imag())))}));
+            }
+            return out;
         });
     add_builtin(
         r, section, "energy", "energy(f, t)",
