@@ -1,5 +1,6 @@
 // symrep/lang/builtins_transforms.cpp -- the integral transforms of Ch. V
 // (transforms/laplace.h): laplace, inverse_laplace, transform.
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,7 @@ void register_transforms_builtins(registry& r) {
             const auto F = transforms::sampled_fourier(samples, h);
             list out;
             for (std::size_t m = 0; m <= samples.size() / 2; ++m) {
-                const double omega = 2 * 3.14159265358979323846 * double(m) / (double(samples.size()) * h);
+                const double omega = 2 * std::numbers::pi * double(m) / (double(samples.size()) * h);
                 out.push_back(value(list{value(GiNaC::ex(GiNaC::numeric(omega))),
                                          value(GiNaC::ex(GiNaC::numeric(F[m].real()) +
                                                          GiNaC::I * GiNaC::numeric(F[m].imag())))}));

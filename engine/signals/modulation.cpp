@@ -9,16 +9,6 @@ namespace symrep::signals {
 
 using GiNaC::ex;
 
-namespace {
-
-ex functional(const coeffs& lambda, const coeffs& x) {
-    ex s = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) s += lambda[i] * x[i];
-    return s;
-}
-
-}  // namespace
-
 modulation carrier_modulation(const representation& R, const coeffs& J, const coeffs& E, const coeffs& w) {
     R.A->check_size(w, "modulation");
     const coeffs wE = R.A->multiply(w, E);

@@ -19,6 +19,12 @@ namespace symrep::signals {
 
 using GiNaC::ex;
 
+ex functional(const coeffs& lambda, const coeffs& x) {
+    ex s = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) s += lambda[i] * x[i];
+    return s;
+}
+
 namespace {
 
 std::string text(const ex& e) { return message_text(e, 300); }
@@ -39,11 +45,6 @@ coeffs power_basis_functional(const algebra& A, const coeffs& d) {
     return coeffs(l->begin(), l->end());
 }
 
-ex functional(const coeffs& lambda, const coeffs& x) {
-    ex s = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) s += lambda[i] * x[i];
-    return s;
-}
 
 }  // namespace
 

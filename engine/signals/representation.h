@@ -48,6 +48,9 @@ struct representation {
     coeffs lambda;  ///< the functional: lambda(x) = sum_i lambda[i] x_i
 };
 
+/// lambda(x) = sum_i lambda[i] x_i (the functional of a representation applied to an element).
+GiNaC::ex functional(const coeffs& lambda, const coeffs& x);
+
 /// (Thm II.1.1) The representation with operator d on A. Throws algebra_error when d
 /// does not generate A (its minimal polynomial has lower degree: Cor. II.1.1, the
 /// signals would satisfy a lower-order equation and Psi would not be one-to-one).

@@ -94,19 +94,25 @@ ex inverse_laplace(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) 
 ex energy(const ex& f, const GiNaC::symbol& t) {
     const ex f2 = tidy(GiNaC::expand(f * f));
     if (f2.is_zero()) return 0;
-    std::string bad;  // the first by printed form: the message does not depend on GiNaC's term order
+    // each exponent's real part shown negative, else divergent or undecided (said, never assumed);
+    // the first offender by printed form, so the message does not depend on GiNaC's term order
+    std::string bad, undecided;
     for (const auto& e : signals::exponents_of(f2, t)) {
         const ex re = real_part_of(e.lambda);
         GiNaC::numeric v;
-        if (is_zero_scalar(re) ||
-            (GiNaC::is_a<GiNaC::numeric>(re.evalf()) && evaluate_numeric(re, 40, v) && v.is_real() && v > 0)) {
-            const std::string x = text(e.lambda);
-            if (bad.empty() || x < bad) bad = x;
-        }
+        const bool constant = GiNaC::is_a<GiNaC::numeric>(re.evalf());
+        const bool known = constant && evaluate_numeric(re, 40, v) && v.is_real();
+        if (re.info(GiNaC::info_flags::negative) || (known && v < 0 && !is_zero_scalar(re))) continue;
+        const std::string x = text(e.lambda);
+        std::string& slot = (is_zero_scalar(re) || (known && v > 0)) ? bad : undecided;
+        if (slot.empty() || x < slot) slot = x;
     }
     if (!bad.empty())
         throw domain_error("energy: the integral of f^2 diverges (f^2 has the exponent " + bad +
                            ", whose real part is not negative)");
+    if (!undecided.empty())
+        throw domain_error("energy: cannot decide whether the integral of f^2 converges: the exponent " + undecided +
+                           " of f^2 is not shown to have a negative real part (declare the parameters positive)");
     const GiNaC::symbol s("s");
     return tidy(laplace_raw(f2, t, s).subs(s == 0));
 }

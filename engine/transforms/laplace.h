@@ -42,8 +42,8 @@ GiNaC::ex laplace(const GiNaC::ex& f, const GiNaC::symbol& t, const GiNaC::ex& s
 GiNaC::ex inverse_laplace(const GiNaC::ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t);
 
 /// (V.2.42, Thm V.2.4) The energy int_0^oo f(t)^2 dt of a causal quasi-polynomial: L[f^2](0), exact.
-/// domain_error when the integral diverges (an exponent of f^2 with real part >= 0, decided from
-/// the exponents; for symbolic parameters the value is returned where they make it converge).
+/// domain_error when the integral diverges (an exponent of f^2 with real part >= 0) or when a real
+/// part is not shown negative (symbolic parameters not declared positive): said, not assumed.
 GiNaC::ex energy(const GiNaC::ex& f, const GiNaC::symbol& t);
 
 /// T f(d) on d's algebra with the convergence decided: yes (every Re(r - mu) < 0 shown),
