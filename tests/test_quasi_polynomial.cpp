@@ -2,12 +2,14 @@
 // closed-form antiderivative and convolution (thesis VI.1.22-25, 37).
 #include <cmath>
 #include <functional>
+#include <sstream>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "mechanics/quasi_polynomial.h"
+#include "scalar/scalar.h"
 
 using namespace symrep;
 using namespace symrep::mechanics;
@@ -166,4 +168,62 @@ TEST(QuasiPolynomial, GenericReadingAndItsExactSpecialCase) {
     EXPECT_TRUE(same_function(quasi_polynomial::from_ex(ex(1), t).antiderivative().to_ex(), t));
     EXPECT_THROW(quasi_polynomial::from_ex(GiNaC::pow(1 + t, 100000), t), size_error);
     EXPECT_THROW(quasi_polynomial::from_ex(t, GiNaC::ex(2)), domain_error);
+}
+
+// (issue 15.1) sum_of_fractions: the solver's coefficients over their denominator factors, one
+// reduced fraction per product of factors, equal to the one-fraction form; fewer than three
+// groups, a non-rational function and a sum that vanishes at the test point are left to the
+// caller (nullopt), so a 0 is never shown as a nonzero-looking sum.
+TEST(QuasiPolynomial, SumOfFractionsIsExactAndShortWhereOneFractionIsLong) {
+    const GiNaC::symbol a("a"), b("b"), c("c");
+    // four distinct quadratic denominators: one fraction has a numerator of degree 8
+    const ex x = 1 / (a * a + b * b + 1) + b / GiNaC::pow(a * a - b + 3, 2) - a / (b * b + c * c + 2) +
+                 (a + b) / (a * a + b * b + c * c + 5) + 3 / GiNaC::pow(a * a + b * b + 1, 2);
+    const auto s = sum_of_fractions(x);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_TRUE(GiNaC::normal(*s - x).is_zero()) << *s;
+    std::ostringstream grouped, one;
+    grouped << *s;
+    one << GiNaC::normal(x);
+    EXPECT_LT(grouped.str().size(), one.str().size()) << *s;
+    // a numerator sharing its denominator's factor is divided by it: (a^2 - 1)/(a - 1)^2 -> (a + 1)/(a - 1)
+    const ex y = (a * a - 1) / GiNaC::pow(a - 1, 2) + 1 / (b + 2) + 1 / (c + 3) + 1 / (a + b + c + 7);
+    const auto sy = sum_of_fractions(y);
+    ASSERT_TRUE(sy.has_value());
+    EXPECT_TRUE(GiNaC::normal(*sy - y).is_zero());
+    EXPECT_FALSE(sy->has(GiNaC::pow(a - 1, -2))) << *sy;
+    // x - x spelled differently (the groups cancel only together): not claimed nonzero
+    const ex z = 1 / (a * (a + 1)) - 1 / a + 1 / (a + 1) + 0 * b;
+    EXPECT_FALSE(sum_of_fractions(z + 1 / (b + 1) - 1 / (b + 1)).has_value());
+    EXPECT_FALSE(sum_of_fractions(GiNaC::sqrt(a) / (a + 1) + 1 / (b + 1) + 1 / (c + 1)).has_value());
+    EXPECT_FALSE(sum_of_fractions(1 / (a + 1) + 1 / (b + 1)).has_value());  // two groups
+}
+
+// proved_zero_by_denominators proves 0 over the factored common denominator and never claims
+// 0 for a nonzero sum.
+TEST(QuasiPolynomial, ZeroProofOverFactoredDenominators) {
+    const GiNaC::symbol a("a"), b("b");
+    EXPECT_TRUE(proved_zero_by_denominators(1 / (a * (a + 1)) - 1 / a + 1 / (a + 1)));
+    EXPECT_TRUE(proved_zero_by_denominators(a / GiNaC::pow(a + b, 2) + b / GiNaC::pow(a + b, 2) - 1 / (a + b)));
+    EXPECT_TRUE(proved_zero_by_denominators(1 / (a - b) + 1 / (b - a)));  // factors up to sign
+    EXPECT_FALSE(proved_zero_by_denominators(1 / (a * (a + 1)) - 1 / a + 1 / (a + 2)));
+    EXPECT_FALSE(proved_zero_by_denominators(1 / (a - b) - 1 / (b - a)));
+    EXPECT_FALSE(proved_zero_by_denominators(GiNaC::sqrt(a) - GiNaC::sqrt(a) + 1 / (a + 1)));
+}
+
+// (issue 15.1) The convolution's 1/lambda^(j+1) kept over powers of |lambda|^2 (not expanded):
+// the same function as the tidied integral, for lambda complex, imaginary and real.
+TEST(QuasiPolynomial, ConvolutionWithFactoredInversePowers) {
+    const GiNaC::symbol k("k"), w("w");
+    for (const ex& f : {GiNaC::pow(t, 3) * GiNaC::exp(-k * t), t * GiNaC::exp(-t) * GiNaC::cos(2 * t),
+                        GiNaC::pow(t, 2) * GiNaC::sin(w * t)}) {
+        const quasi_polynomial g = quasi_polynomial::from_ex(GiNaC::cos(w * t) + t * GiNaC::exp(3 * t), t);
+        const quasi_polynomial c = convolution(quasi_polynomial::from_ex(f, t), g);
+        // d/dt (f * g) = f(t) g(0) + (f * g') for g with g(0) known
+        const quasi_polynomial lhs = c.derivative();
+        const quasi_polynomial rhs = quasi_polynomial::from_ex(f, t) * quasi_polynomial::from_ex(ex(1), t) +
+                                     convolution(quasi_polynomial::from_ex(f, t), g.derivative());
+        EXPECT_TRUE((lhs - rhs).is_zero()) << f;
+        EXPECT_TRUE(c.at_zero().re.is_zero()) << f;
+    }
 }

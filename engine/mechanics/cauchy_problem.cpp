@@ -200,7 +200,10 @@ quasi_polynomial forcing_coefficient(const ex& c, const ex& t, const ex& v) {
 // with several.
 ex in_square_root_field(const ex& c) {
     const square_roots_as_symbols r = with_square_roots_as_symbols(c);
-    if (r.roots.empty()) return one_fraction(c);
+    if (r.roots.empty()) {
+        if (const auto s = sum_of_fractions(c)) return *s;
+        return one_fraction(c);
+    }
     if (r.roots.size() != 1 || r.roots[0].first.has(GiNaC::I)) return c;  // several: left as it is
     const ex& root = r.roots[0].first;
     const ex& q = r.roots[0].second;

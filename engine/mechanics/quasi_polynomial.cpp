@@ -253,6 +253,7 @@ void quasi_polynomial::normalize() const {
     terms_.clear();
     static const point_value zero = value_at_generic_point(0);
     for (qp_term& u : out) {
+        if (proved_zero_by_denominators(u.c.re) && proved_zero_by_denominators(u.c.im)) continue;
         u.c = tidy_cex(u.c);
         // with radicals, seen nonzero at the point spares the exact test modulo square roots
         // (most coefficients are not 0); without, that test is cheap
@@ -324,7 +325,10 @@ GiNaC::ex quasi_polynomial::to_ex_untidied() const {
 GiNaC::ex quasi_polynomial::real_form(const std::vector<qp_term>& terms, bool tidied) const {
     // tidied terms: their sum over one fraction (no gcd of the expanded products); raw ones:
     // one tidy of the sum (the terms were never brought to lowest terms)
-    const auto fraction = [tidied](const ex& c) { return tidied ? one_fraction(c) : tidy(c); };
+    const auto fraction = [tidied](const ex& c) {
+        if (const auto s = sum_of_fractions(c)) return *s;
+        return tidied ? one_fraction(c) : tidy(c);
+    };
     // one coefficient per real function t^k e^(a t) cos(b t), t^k e^(a t) sin(b t) (the terms of
     // lambda and its conjugate meet), each normalized once: not the whole sum expanded
     struct basis {
@@ -458,18 +462,51 @@ quasi_polynomial operator*(const ex& s, const quasi_polynomial& f) {
     return split(s) * f;
 }
 
+namespace {
+
+cex expand_cex(const cex& z) { return {GiNaC::expand(z.re), GiNaC::expand(z.im)}; }
+
+// The terms of int_0^t tau^k e^(lambda tau) dtau with 1/lambda^(j+1) kept as
+// conj(lambda)^(j+1) / |lambda|^(2(j+1)), the power of |lambda|^2 not expanded: the sums of
+// such terms are brought to their form once, per function of t (real_form), and normal()
+// of every power expanded (|lambda|^2)^(j+1) (60 % of a derivation with t^3 e^(-k t) forcing).
+std::vector<qp_term> integral_monomial_terms(unsigned k, const cex& lambda) {
+    if (is_zero_cex(lambda)) return {{cex(ex(1) / (k + 1), 0), k + 1, cex(0, 0)}};
+    const char* where = "int_0^t tau^k e^(lambda tau) dtau";
+    // 1/lambda = conj(lambda)/n: n = |lambda|^2, or b for lambda = i b, or a for lambda = a
+    const bool imaginary = is_zero_scalar(lambda.re), real = is_zero_scalar(lambda.im);
+    const ex n = real ? tidy(lambda.re) : imaginary ? tidy(lambda.im) : tidy(lambda.norm2());
+    if (!is_nonzero_generic(n, std::string("division in ") + where))
+        throw domain_error(std::string("division by an exact zero in ") + where);
+    const cex conj_lambda = real ? cex(1, 0) : imaginary ? cex(0, -1) : expand_cex(lambda.conj());
+    std::vector<qp_term> out;
+    cex p = conj_lambda;  // conj(lambda)^(j+1)
+    ex ff = 1;            // k!/(k-j)!
+    for (unsigned j = 0; j <= k; ++j) {
+        const ex s = (j % 2 == 0 ? ex(1) : ex(-1)) * ff * GiNaC::pow(n, -int(j + 1));
+        const cex c(s * p.re, s * p.im);
+        out.push_back({c, k - j, lambda});
+        if (j == k) out.push_back({-c, 0, cex(0, 0)});
+        ff = ff * ex(k - j);
+        p = expand_cex(p * conj_lambda);
+    }
+    return out;
+}
+
+}  // namespace
+
 quasi_polynomial convolution(const quasi_polynomial& f, const quasi_polynomial& g) {
     quasi_polynomial r = f;
     r.adopt_variable(g);
     r.terms_.clear();
-    const ex t = r.t_;
     for (const auto& u : f.terms_)
         for (const auto& v : g.terms_) {
-            const cex c = u.c * v.c, d = u.lambda - v.lambda;
+            const cex c = u.c * v.c, d = tidy_cex(u.lambda - v.lambda);
             for (unsigned i = 0; i <= v.k; ++i) {
                 const ex s = binomial(v.k, i) * (i % 2 == 0 ? 1 : -1);
-                r = r + integral_monomial(u.k + i, d, t) *
-                            quasi_polynomial::monomial(s * c, v.k - i, v.lambda, t);
+                // int_0^t tau^(u.k + i) e^(d tau) dtau times s c t^(v.k - i) e^(v.lambda t)
+                for (const qp_term& w : integral_monomial_terms(u.k + i, d))
+                    r.add_term({s * c * w.c, w.k + v.k - i, w.lambda + v.lambda});
             }
         }
     return r;

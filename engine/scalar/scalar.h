@@ -12,6 +12,7 @@
 // both paths. It includes only core/ (docs/architecture.md).
 #pragma once
 
+#include <optional>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -124,6 +125,24 @@ GiNaC::ex tidy(const GiNaC::ex& x);
 /// cost seconds on the solver's denominators (lambda_i - lambda_j)^m). Expressions with
 /// function calls as tidy().
 GiNaC::ex one_fraction(const GiNaC::ex& x);
+
+/// A rational function of symbols as a sum of reduced fractions, one per product of
+/// polynomial denominator factors (each factor a sum, identified up to its sign): the terms
+/// over the same factors are added, and each such numerator is divided by its factors while
+/// they divide it. No common denominator of different factors is formed (its numerator is
+/// the product of all the others: the solver's coefficients over (lambda_i - mu_j)^m grew
+/// 3x longer and cost 20x more that way). With three groups or more the result is checked
+/// against 0 at a rational point. nullopt (the caller forms one fraction, exactly) when x is
+/// not a rational function of symbols, has fewer than three groups (one fraction is as short
+/// and as cheap), or vanishes at the point (it may be 0: only a full normal form decides).
+std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x);
+
+/// True when x, a rational function of symbols, is proved 0 by its terms over the same
+/// polynomial denominator factors (any powers: over their common denominator) summing to 0
+/// group by group. False says nothing (the groups may cancel only together): the caller's
+/// full test decides. Cheap where the terms of a sum cancel factor by factor, as the residuals
+/// of the solver's closed forms do.
+bool proved_zero_by_denominators(const GiNaC::ex& x);
 
 /// Half-integer powers of positive rationals in each product made one
 /// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221).

@@ -281,6 +281,167 @@ GiNaC::ex one_fraction(const GiNaC::ex& x) {
     return y.subs(back, GiNaC::subs_options::no_pattern);
 }
 
+namespace {
+
+// Only symbols, rationals, sums, products and integer powers: a rational function.
+bool is_rational_function_of_symbols(const GiNaC::ex& x) {
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it) {
+        if (GiNaC::is_a<GiNaC::symbol>(*it) || GiNaC::is_a<GiNaC::add>(*it) || GiNaC::is_a<GiNaC::mul>(*it))
+            continue;
+        if (GiNaC::is_a<GiNaC::numeric>(*it)) {
+            if (!GiNaC::ex_to<GiNaC::numeric>(*it).is_rational()) return false;
+            continue;
+        }
+        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+            GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer())
+            continue;
+        return false;
+    }
+    return true;
+}
+
+std::size_t node_count(const GiNaC::ex& x) {
+    std::size_t n = 0;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it) ++n;
+    return n;
+}
+
+// x at a rational point away from the usual poles (0, +-1, small integers); nullopt at a pole.
+std::optional<GiNaC::numeric> at_rational_point(const GiNaC::ex& x) {
+    GiNaC::exmap point;
+    int k = 0;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !point.count(*it)) {
+            point[*it] = GiNaC::numeric(1009 + 97 * k, 211 + 13 * k);
+            ++k;
+        }
+    try {
+        const GiNaC::ex v = x.subs(point, GiNaC::subs_options::no_pattern);
+        if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nullopt;
+        return GiNaC::ex_to<GiNaC::numeric>(v);
+    } catch (const std::exception&) {  // a denominator vanished there
+        return std::nullopt;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// The terms of an expanded rational function by their polynomial denominator factors: the
+// factors (sums, expanded, identified up to sign) and, per product of their powers, the sum
+// of the terms' other factors (numerators over monomial denominators).
+struct denominator_groups {
+    std::vector<GiNaC::ex> bases;
+    std::map<std::map<std::size_t, int>, GiNaC::ex> groups;  // factor -> power: numerator
+};
+
+denominator_groups group_by_denominator(const GiNaC::ex& e) {
+    denominator_groups out;
+    auto& bases = out.bases;
+    const auto add_term = [&](const GiNaC::ex& term) {
+        GiNaC::ex num = 1;
+        std::map<std::size_t, int> den;
+        const auto factor = [&](const GiNaC::ex& f) {
+            if (!GiNaC::is_a<GiNaC::power>(f) || !GiNaC::is_a<GiNaC::add>(f.op(0)) ||
+                !GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
+                num *= f;
+                return;
+            }
+            const GiNaC::ex b = GiNaC::expand(f.op(0));
+            const int k = -GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int();
+            std::size_t i = 0;
+            for (; i < bases.size(); ++i) {
+                if (bases[i].is_equal(b)) break;
+                if (GiNaC::expand(bases[i] + b).is_zero()) {
+                    if (k % 2) num = -num;
+                    break;
+                }
+            }
+            if (i == bases.size()) bases.push_back(b);
+            den[i] += k;
+        };
+        if (GiNaC::is_a<GiNaC::mul>(term))
+            for (const auto& f : term) factor(f);
+        else
+            factor(term);
+        out.groups[den] += num;
+    };
+    if (GiNaC::is_a<GiNaC::add>(e))
+        for (const auto& term : e) add_term(term);
+    else
+        add_term(e);
+    return out;
+}
+
+}  // namespace
+
+bool proved_zero_by_denominators(const GiNaC::ex& x) {
+    if (!is_rational_function_of_symbols(x)) return false;
+    guard_expansion(x, "simplification", false);
+    const denominator_groups d = group_by_denominator(GiNaC::expand(x));
+    // over the product of the largest power of each factor: the numerators are Laurent
+    // polynomials in the symbols (monomial denominators), whose expanded sum is canonical
+    std::map<std::size_t, int> most;
+    for (const auto& [den, num] : d.groups)
+        for (const auto& [i, k] : den) most[i] = std::max(most[i], k);
+    GiNaC::ex n = 0;
+    for (const auto& [den, num] : d.groups) {
+        GiNaC::ex c = num;
+        for (const auto& [i, k] : most) {
+            const auto it = den.find(i);
+            if (const int r = k - (it == den.end() ? 0 : it->second); r > 0) c *= GiNaC::pow(d.bases[i], r);
+        }
+        n += GiNaC::expand(c);
+    }
+    return GiNaC::expand(n).is_zero();
+}
+
+std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x) {
+    if (!is_rational_function_of_symbols(x)) return std::nullopt;
+    guard_expansion(x, "simplification", false);
+    const denominator_groups grouped = group_by_denominator(GiNaC::expand(x));
+    const auto& bases = grouped.bases;
+    const auto& groups = grouped.groups;
+    if (groups.size() < 3) return std::nullopt;
+    GiNaC::ex sum = 0;
+    for (const auto& [den, numerator] : groups) {
+        const GiNaC::ex nd = GiNaC::normal(numerator).numer_denom();  // monomial denominators
+        GiNaC::ex N = GiNaC::expand(nd.op(0)), D = nd.op(1);
+        if (N.is_zero()) continue;
+        for (const auto& [i, k] : den) {
+            int left = k;
+            GiNaC::ex q;
+            while (left > 0 && GiNaC::divide(N, bases[i], q)) {
+                N = q;
+                --left;
+            }
+            if (left > 0) D *= GiNaC::pow(bases[i], left);
+        }
+        sum += N / D;
+    }
+    // the groups may cancel across denominators: a zero at the point sends x to the full test
+    const auto v = at_rational_point(sum);
+    if (!v || v->is_zero()) return std::nullopt;
+    // over a common denominator of low degree one fraction is cheap and often shorter
+    // (1/((a + b) a) + 1/((a - b) a) - 2/a^2 is 2 b^2/(a^2 (a^2 - b^2))): the smaller wins
+    int lcm_degree = 0;
+    for (std::size_t i = 0; i < bases.size(); ++i) {
+        int most = 0;
+        for (const auto& g : groups)
+            if (const auto it = g.first.find(i); it != g.first.end()) most = std::max(most, it->second);
+        int degree = 0;
+        for (auto it = bases[i].preorder_begin(); it != bases[i].preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it)) degree = std::max(degree, bases[i].degree(*it));
+        lcm_degree += most * std::max(degree, 1);
+    }
+    if (lcm_degree <= 8) {
+        const GiNaC::ex one = GiNaC::normal(sum);
+        if (node_count(one) <= node_count(sum)) return one;
+    }
+    return sum;
+}
+
 std::string message_text(const GiNaC::ex& e, std::size_t max) {
     std::ostringstream os;
     os << e;
