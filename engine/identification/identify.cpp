@@ -179,6 +179,7 @@ identification_report identify_values(const measured_system& s, const linear_par
         rep.values_f.push_back(f);
         rep.points_q.push_back(apply(average, s.q, k));
     }
+    rep.points = rep.points_q.size();
     rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
     rep.residual = integrated_residual(s, av, rep.f);
     rep.warning = condition_warning(rep.condition_number);
@@ -348,7 +349,7 @@ identification_report identify_sindy(const measured_system& s, const linear_part
     for (std::size_t k = 0; k < m; ++k) rep.a[k] = a[k] ? *a[k] : 0.0;
     for (std::size_t j = 0; j < unknown.size(); ++j) rep.a[unknown[j]] = x(Eigen::Index(j));
     for (unsigned i = 0; i <= degree; ++i) rep.f.push_back(x(Eigen::Index(unknown.size() + i)));
-    rep.residual = (A * x - b).norm() / std::sqrt(double(rows)) / std::max(rms(s.u), 1e-300);
+    rep.residual = integrated_residual(s, rep.a, rep.f);
     rep.warning = condition_warning(cond);
     return rep;
 }

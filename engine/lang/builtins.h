@@ -92,6 +92,7 @@ void register_mechanics_builtins(registry& r);    // lang/builtins_mechanics.cpp
 void register_rules_builtins(registry& r);        // lang/builtins_rules.cpp: load_rules, rewrite, rules
 void register_plot_builtins(registry& r);
 void register_transforms_builtins(registry& r);  // lang/builtins_transforms.cpp: laplace, inverse_laplace, transform
+void register_identification_builtins(registry& r);  // lang/builtins_identification.cpp: identify, operational matrices
 void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling         // lang/builtins_plot.cpp: plot, trajectory, hodograph
 
 /// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).

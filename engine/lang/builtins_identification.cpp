@@ -1,0 +1,211 @@
+// symrep/lang/builtins_identification.cpp -- identification of nonlinear systems with Walsh
+// algebras (thesis IV.2; identification/identify.h): walsh_coefficients, operational_matrix,
+// block_pulse_matrix, simulate_system, identify.
+#include <cmath>
+#include <iomanip>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "algebra/walsh_hadamard.h"
+#include "core/error.h"
+#include "scalar/scalar.h"
+#include "identification/identify.h"
+#include "identification/operational_matrix.h"
+#include "identification/walsh_series.h"
+#include "lang/builtins.h"
+#include "numeric/evaluator.h"
+
+namespace symrep::lang {
+
+namespace {
+
+namespace id = symrep::identification;
+
+const char* const section = "Identification (IV.2)";
+
+double number_of(const GiNaC::ex& e, const builtin& b, const std::string& what) {
+    const GiNaC::ex v = e.evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+        throw type_error(b.name + ": " + what + " is not a real number: " + message_text(e, 200));
+    return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+}
+
+// A function of t on [0, 1): a compiled closed form (every other symbol is an error, named).
+std::function<double(double)> function_of(const GiNaC::ex& e, const GiNaC::symbol& t, const builtin& b,
+                                          const std::string& what) {
+    try {
+        auto f = std::make_shared<num::compiled_function>(num::compile(e, {t}));
+        return [f](double x) {
+            double y;
+            f->eval(&x, &y);
+            return y;
+        };
+    } catch (const error& ex) {
+        throw type_error(b.name + ": " + what + " " + message_text(e, 200) + " is not a numeric function of " +
+                         t.get_name() + " (" + ex.what() + ")");
+    }
+}
+
+// The 2^n block averages of a signal given as a list of numbers (its block values) or as an
+// expression in t (averaged by quadrature).
+std::vector<double> blocks_of(const value& v, const GiNaC::symbol& t, unsigned n, const builtin& b,
+                              const std::string& what) {
+    const std::size_t N = std::size_t(1) << n;
+    if (v.is_list()) {
+        const list& l = v.as_list();
+        if (l.size() != N)
+            throw domain_error(b.name + ": " + what + " has " + std::to_string(l.size()) + " block values; n = " +
+                               std::to_string(n) + " needs 2^n = " + std::to_string(N) +
+                               (is_pow2(l.size()) ? "" : " (" + std::to_string(l.size()) +
+                                " is not a power of two: resample the signal to 2^n blocks)"));
+        std::vector<double> out;
+        for (std::size_t k = 0; k < N; ++k) {
+            if (!l[k].is_ex()) throw type_error(b.name + ": block value " + std::to_string(k + 1) + " of " + what + " is not a number");
+            out.push_back(number_of(l[k].as_ex(), b, "block value " + std::to_string(k + 1) + " of " + what));
+        }
+        return out;
+    }
+    if (!v.is_ex()) throw type_error(b.name + ": " + what + " must be an expression in t or a list of block values");
+    return id::block_averages(function_of(v.as_ex(), t, b, what), n);
+}
+
+list number_list(const std::vector<double>& xs) {
+    list out;
+    for (double x : xs) out.push_back(value(GiNaC::ex(GiNaC::numeric(x))));
+    return out;
+}
+
+GiNaC::ex polynomial(const std::vector<double>& c, const GiNaC::ex& x) {
+    GiNaC::ex p = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) p += GiNaC::numeric(c[i]) * GiNaC::pow(x, int(i));
+    return p;
+}
+
+std::string shown(double x) {
+    std::ostringstream os;
+    os << std::setprecision(3) << x;
+    return os.str();
+}
+
+}  // namespace
+
+void register_identification_builtins(registry& r) {
+    add_builtin(
+        r, section, "walsh_coefficients", "walsh_coefficients(f, t, n) | walsh_coefficients(values)",
+        "The 2^n Walsh coefficients c_p = int_0^1 f w_p dt (IV.2.4) of f on [0, 1), Walsh functions in Paley's "
+        "ordering (the one in which P is the recursion IV.2.19). Exact for a polynomial f in t, by Gauss-Kronrod "
+        "quadrature otherwise; from a list of 2^n block values (block averages) by the fast Walsh-Hadamard "
+        "transform, exact for exact values.",
+        "(IV.2.4-5, IV.2.10)", "walsh_coefficients(t^2, t, 2)", 1, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            if (a.size() == 1) {
+                const std::vector<GiNaC::ex> xs = arg_ex_list(a, 0, b);
+                list out;
+                for (const auto& c : id::walsh_from_blocks(xs)) out.push_back(value(c));
+                return out;
+            }
+            if (a.size() != 3) throw type_error(b.name + ": usage " + b.signature);
+            const GiNaC::symbol& t = arg_symbol(a, 1, b);
+            const unsigned n = unsigned(arg_int(a, 2, b, 1, 16));
+            const GiNaC::ex& f = arg_ex(a, 0, b);
+            list out;
+            if (GiNaC::expand(f).is_polynomial(t) && !has_matrix(f)) {
+                for (const auto& c : id::walsh_from_blocks(id::block_averages_exact(f, t, n))) out.push_back(value(c));
+                return out;
+            }
+            return number_list(id::walsh_from_blocks(id::block_averages(function_of(f, t, b, "the signal"), n)));
+        });
+    add_builtin(
+        r, section, "operational_matrix", "operational_matrix(n)",
+        "P_(2^n), the operational matrix of integration in the Walsh basis: int_0^t w = P w (IV.2.18), by the "
+        "recursion P_1 = 1/2, P_m = [[P_(m/2), -I/(2m)], [I/(2m), 0]] (IV.2.19); exact, n = 1 .. 8. P = W Q W^T / 2^n "
+        "(IV.2.22-23, W the Walsh functions on the blocks).",
+        "(IV.2.19)", "operational_matrix(2)", 1, 1,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return GiNaC::ex(id::operational_matrix_exact(unsigned(arg_int(a, 0, b, 1, 8))));
+        });
+    add_builtin(
+        r, section, "block_pulse_matrix", "block_pulse_matrix(n)",
+        "Q_(2^n), the operational matrix of integration in the block-pulse basis: int_0^t e = Q e (IV.2.20-21); "
+        "exact, n = 1 .. 8. Its characteristic and minimal polynomial are (lambda - 1/2^(n+1))^(2^n).",
+        "(IV.2.21)", "block_pulse_matrix(2)", 1, 1,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            return GiNaC::ex(id::block_pulse_matrix_exact(unsigned(arg_int(a, 0, b, 1, 8))));
+        });
+    add_builtin(
+        r, section, "simulate_system", "simulate_system(f, x, u, t, n [, [a_1, ..., a_m]])",
+        "The output of q^(m) + a_1 q^(m-1) + ... + a_m q + f(q) = u (IV.2.37; default m = 2, a = 0: IV.2.25) on "
+        "[0, 1) from zero initial data, integrated by Boost.Odeint (rkf78, 1e-12): [q, u] as two lists of 2^n "
+        "block averages, the data identify() reads. f is an expression in x, u in t.",
+        "(IV.2.25, IV.2.37)", "simulate_system(4*x + x^3, x, 10*sin(2*pi*t), t, 3)", 5, 6,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const GiNaC::symbol& x = arg_symbol(a, 1, b);
+            const GiNaC::symbol& t = arg_symbol(a, 3, b);
+            const unsigned n = unsigned(arg_int(a, 4, b, 1, 16));
+            std::vector<double> coeffs{0, 0};
+            if (a.size() == 6) {
+                coeffs.clear();
+                for (const auto& e : arg_ex_list(a, 5, b)) coeffs.push_back(number_of(e, b, "a coefficient a_k"));
+            }
+            const auto f = function_of(arg_ex(a, 0, b), x, b, "f");
+            const auto u = function_of(arg_ex(a, 2, b), t, b, "the input u");
+            const id::measured_system s = id::simulate_system(f, u, coeffs, n);
+            return list{value(number_list(s.q)), value(number_list(s.u))};
+        });
+    add_builtin(
+        r, section, "identify", "identify(q, u, t, n, x, d [, [a_1, ..., a_m] [, method]])",
+        "The nonlinearity f of q^(m) + a_1 q^(m-1) + ... + a_m q + f(q) = u (IV.2.25, IV.2.37; zero initial data, "
+        "[0, 1)) as a polynomial of degree d in x, from the measured output q and input u: expressions in t or "
+        "lists of 2^n block averages. a: numbers (known) or symbols (unknown, estimated jointly; returns [f, [a_1, "
+        "..., a_m]]); default [0, 0]. method \"integral\" (default): least squares in the integrated equation "
+        "(IV.2.39) -- nothing is differentiated; \"values\": the thesis's procedure, f at the 2^n points from the "
+        "linear system (IV.2.36, IV.2.45), its alternating pole cancelled, then fitted; \"derivatives\": regression "
+        "on finite-difference derivatives (the baseline). Prints the points used, the condition number and the "
+        "residual of the integrated equation; an ill-conditioned fit is said with its number.",
+        "(IV.2.26-36, IV.2.39-46)",
+        "identify(simulate_system(4*x + 50*x^3, x, 40*sin(2*pi*t), t, 8)[0], 40*sin(2*pi*t), t, 8, x, 3)", 6, 8,
+        [](const builtin& b, const std::vector<value>& a, context& c) -> value {
+            const GiNaC::symbol& t = arg_symbol(a, 2, b);
+            const unsigned n = unsigned(arg_int(a, 3, b, 1, 16));
+            const GiNaC::symbol& x = arg_symbol(a, 4, b);
+            const unsigned d = unsigned(arg_int(a, 5, b, 0, 20));
+            id::linear_part lin{0.0, 0.0};
+            std::vector<GiNaC::ex> unknown_names;
+            if (a.size() >= 7) {
+                lin.clear();
+                for (const auto& e : arg_ex_list(a, 6, b)) {
+                    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+                        lin.push_back(std::nullopt);
+                        unknown_names.push_back(e);
+                    } else {
+                        lin.push_back(number_of(e, b, "a coefficient a_k"));
+                    }
+                }
+                if (lin.empty()) throw domain_error(b.name + ": the list of a_k is empty (order m >= 1)");
+            }
+            const std::string method = a.size() == 8 ? arg_string(a, 7, b) : "integral";
+            id::measured_system s;
+            s.q = blocks_of(a[0], t, n, b, "the output q");
+            s.u = blocks_of(a[1], t, n, b, "the input u");
+            id::identification_report rep;
+            if (method == "integral") rep = id::identify_integral(s, lin, d);
+            else if (method == "values") rep = id::identify_values(s, lin, d);
+            else if (method == "derivatives") rep = id::identify_sindy(s, lin, d, 0.0);
+            else
+                throw type_error(b.name + ": unknown method \"" + method +
+                                 "\" (\"integral\", \"values\" or \"derivatives\")");
+            c.out() << "identify (" << method << "): " << rep.points << " points, condition number "
+                    << shown(rep.condition_number) << ", residual of the integrated equation " << shown(rep.residual)
+                    << "\n";
+            if (!rep.warning.empty()) c.out() << "warning: " << rep.warning << "\n";
+            const GiNaC::ex f = polynomial(rep.f, x);
+            if (unknown_names.empty()) return f;
+            list as;
+            for (double v : rep.a) as.push_back(value(GiNaC::ex(GiNaC::numeric(v))));
+            return list{value(f), value(as)};
+        });
+}
+
+}  // namespace symrep::lang
