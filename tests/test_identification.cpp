@@ -177,6 +177,16 @@ TEST(Identification, DuffingConverges) {
     }
 }
 
+// The printed system (IV.2.36) without the cancellation: the fitted cubic coefficient stays
+// about 10 away from 50 from 2^8 to 2^12 blocks (the claim of docs/identification.md).
+TEST(Identification, ThePrintedValuesDoNotConverge) {
+    for (unsigned n : {8U, 10U, 12U}) {
+        const measured_system s = simulate_system(duffing, drive, {0, 0}, n);
+        EXPECT_GT(std::abs(identify_values_as_printed(s, {0.0, 0.0}, 3).f[3] - 50), 5.0) << n;
+        EXPECT_LT(std::abs(identify_values(s, {0.0, 0.0}, 3).f[3] - 50), 0.1) << n;
+    }
+}
+
 // The pendulum q'' + 10 sin q = u (f not a polynomial): a degree-5 fit reproduces f on the range
 // of q within 1e-3 of its size; a quadratic f = 3 q + 2 q^2 with the order-3 operator
 // q''' + 2 q'' + 5 q' + (known a) and with a_1, a_2 unknown, estimated jointly.

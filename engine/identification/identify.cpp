@@ -186,6 +186,31 @@ identification_report identify_values(const measured_system& s, const linear_par
     return rep;
 }
 
+identification_report identify_values_as_printed(const measured_system& s, const linear_part& a, unsigned degree) {
+    check_system(s, a);
+    std::vector<double> av;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        if (!a[k]) throw domain_error("identify: a_" + std::to_string(k + 1) + " is unknown");
+        av.push_back(*a[k]);
+    }
+    const long m = long(a.size());
+    identification_report rep;
+    rep.points = s.q.size();
+    rep.a = av;
+    rep.points_q = s.q;
+    rep.values_f = s.u;
+    for (long j = 0; j <= m; ++j) {  // (IV.2.45) as printed
+        const double aj = j == 0 ? 1.0 : av[std::size_t(j - 1)];
+        if (aj == 0) continue;
+        const std::vector<double> d = integrate_blocks(s.q, j - m, s.period);
+        for (std::size_t k = 0; k < d.size(); ++k) rep.values_f[k] -= aj * d[k];
+    }
+    rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
+    rep.residual = integrated_residual(s, av, rep.f);
+    rep.warning = condition_warning(rep.condition_number);
+    return rep;
+}
+
 identification_report identify_integral(const measured_system& s, const linear_part& a, unsigned degree) {
     check_system(s, a);
     refuse_collinear(a, degree);

@@ -59,6 +59,10 @@ struct identification_report {
 /// polynomial of degree d through them. Every a_k must be known (symrep::domain_error
 /// otherwise: use identify_integral).
 identification_report identify_values(const measured_system& s, const linear_part& a, unsigned degree);
+/// The same system solved as printed, f(q_e) = u_e - sum_j a_j (Q^T)^(j-m) q_e at all 2^n points,
+/// without cancelling the pole: for comparison only (its values grow like N^(m-1) (-1)^k and
+/// the fit converges to a wrong f; bench/bench_identification.cpp charts it).
+identification_report identify_values_as_printed(const measured_system& s, const linear_part& a, unsigned degree);
 /// The integral form (IV.2.39) by least squares in c_0 .. c_d and the unknown a_k.
 identification_report identify_integral(const measured_system& s, const linear_part& a, unsigned degree);
 

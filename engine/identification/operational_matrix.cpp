@@ -119,7 +119,8 @@ std::vector<double> integrate_blocks(const std::vector<double>& g, long m, doubl
         return y;
     }
     // the same causal convolution by FFT on 2N points (no wrap-around)
-    Eigen::FFT<double> fft;
+    // (one transform object per thread: it keeps its plans and twiddles between calls)
+    thread_local Eigen::FFT<double> fft;
     std::vector<double> a(2 * N, 0.0), b(2 * N, 0.0), c;
     std::copy(r.begin(), r.end(), a.begin());
     std::copy(g.begin(), g.end(), b.begin());
