@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "algebra/walsh.h"
 #include "core/error.h"
 #include "identification/identify.h"
 #include "identification/operational_matrix.h"
@@ -144,6 +145,29 @@ TEST(Identification, WalshSeries) {
     EXPECT_THROW(block_averages_exact(GiNaC::sin(t), t, 3), domain_error);
 }
 
+// (IV.2.5-9) the truncated series form an algebra isomorphic to the Walsh algebra of III.3: the
+// product of two series is the algebra's product of their coefficient vectors.
+TEST(Identification, SeriesProductIsTheWalshAlgebrasProduct) {
+    const auto A = symrep::walsh::make(3);
+    std::mt19937 gen(7);
+    std::uniform_int_distribution<int> d(-9, 9);
+    std::vector<double> a(8), b(8);
+    symrep::coeffs ea(8), eb(8);
+    for (std::size_t k = 0; k < 8; ++k) {
+        a[k] = d(gen);
+        b[k] = d(gen);
+        ea[k] = int(a[k]);
+        eb[k] = int(b[k]);
+    }
+    const auto ab = walsh_product(a, b);
+    const symrep::coeffs e = A->multiply(ea, eb);
+    for (std::size_t k = 0; k < 8; ++k)
+        EXPECT_NEAR(ab[k], GiNaC::ex_to<GiNaC::numeric>(e[k]).to_double(), 1e-12) << k;
+    // and the value of the series at t is its block value
+    const auto v = blocks_from_walsh(ab);
+    for (std::size_t k = 0; k < 8; ++k) EXPECT_NEAR(walsh_series_value(ab, (double(k) + 0.25) / 8), v[k], 1e-12);
+}
+
 namespace {
 
 const auto duffing = [](double q) { return 4 * q + 50 * q * q * q; };
@@ -267,4 +291,9 @@ TEST(Identification, BadInputIsRefusedByName) {
     for (auto& x : zero.q) x = 0;
     EXPECT_THROW(identify_integral(zero, {0.0, 0.0}, 3), domain_error);
     EXPECT_THROW(operational_matrix_exact(13), size_error);
+    // data that do not start from rest (q(0) = 1 instead of 0) are identified with a warning
+    measured_system moved = simulate_system(duffing, drive, {0, 0}, 8);
+    for (auto& x : moved.q) x += 1;
+    EXPECT_NE(identify_integral(moved, {0.0, 0.0}, 3).warning.find("zero initial data"), std::string::npos);
+    EXPECT_TRUE(identify_integral(simulate_system(duffing, drive, {0, 0}, 8), {0.0, 0.0}, 3).warning.empty());
 }

@@ -94,6 +94,24 @@ std::string condition_warning(double cond) {
     return os.str();
 }
 
+// (IV.2.38) q(0) = q'(0) = ... = 0 makes the first block average O(h^m) of q's scale: a first
+// block above 5 % of the largest |q| (with 16 blocks or more) means data that do not start from
+// rest, which the integrated equation does not describe.
+std::string initial_data_warning(const measured_system& s) {
+    double most = 0;
+    for (double x : s.q) most = std::max(most, std::abs(x));
+    if (s.q.size() < 16 || std::abs(s.q[0]) <= 0.05 * most) return "";
+    std::ostringstream os;
+    os << "q does not start from rest (first block average " << s.q[0] << ", largest " << most
+       << "): the procedure assumes zero initial data (IV.2.38); the result is not the system's f";
+    return os.str();
+}
+
+std::string warnings(const measured_system& s, double cond) {
+    std::string a = initial_data_warning(s), b = condition_warning(cond);
+    return a.empty() ? b : b.empty() ? a : a + "; " + b;
+}
+
 }  // namespace
 
 std::vector<double> fit_polynomial(const std::vector<double>& x, const std::vector<double>& y, unsigned degree,
@@ -182,7 +200,7 @@ identification_report identify_values(const measured_system& s, const linear_par
     rep.points = rep.points_q.size();
     rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
     rep.residual = integrated_residual(s, av, rep.f);
-    rep.warning = condition_warning(rep.condition_number);
+    rep.warning = warnings(s, rep.condition_number);
     return rep;
 }
 
@@ -207,7 +225,7 @@ identification_report identify_values_as_printed(const measured_system& s, const
     }
     rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
     rep.residual = integrated_residual(s, av, rep.f);
-    rep.warning = condition_warning(rep.condition_number);
+    rep.warning = warnings(s, rep.condition_number);
     return rep;
 }
 
@@ -255,7 +273,7 @@ identification_report identify_integral(const measured_system& s, const linear_p
     for (std::size_t u = 0; u < unknown.size(); ++u) rep.a[unknown[u]] = r.x(Eigen::Index(u));
     for (unsigned i = 0; i <= degree; ++i) rep.f.push_back(r.x(Eigen::Index(unknown.size() + i)));
     rep.residual = integrated_residual(s, rep.a, rep.f);
-    rep.warning = condition_warning(rep.condition_number);
+    rep.warning = warnings(s, rep.condition_number);
     return rep;
 }
 
@@ -375,7 +393,7 @@ identification_report identify_sindy(const measured_system& s, const linear_part
     for (std::size_t j = 0; j < unknown.size(); ++j) rep.a[unknown[j]] = x(Eigen::Index(j));
     for (unsigned i = 0; i <= degree; ++i) rep.f.push_back(x(Eigen::Index(unknown.size() + i)));
     rep.residual = integrated_residual(s, rep.a, rep.f);
-    rep.warning = condition_warning(cond);
+    rep.warning = warnings(s, cond);
     return rep;
 }
 

@@ -87,7 +87,10 @@ std::vector<GiNaC::ex> walsh_from_blocks(std::vector<GiNaC::ex> v) {
     return v;
 }
 
-std::vector<double> blocks_from_walsh(std::vector<double> c) {
+namespace {
+
+template <class T>
+std::vector<T> from_walsh(std::vector<T> c) {
     const unsigned n = log2_of_count(c.size(), "Walsh series");
     fwht(c);  // W^T c = R H c
     for (std::size_t k = 0; k < c.size(); ++k) {
@@ -95,6 +98,16 @@ std::vector<double> blocks_from_walsh(std::vector<double> c) {
         if (r > k) std::swap(c[k], c[r]);
     }
     return c;
+}
+
+}  // namespace
+
+std::vector<double> blocks_from_walsh(std::vector<double> c) { return from_walsh(std::move(c)); }
+
+std::vector<GiNaC::ex> blocks_from_walsh(std::vector<GiNaC::ex> c) {
+    std::vector<GiNaC::ex> v = from_walsh(std::move(c));
+    for (auto& x : v) x = GiNaC::normal(x);
+    return v;
 }
 
 std::vector<double> block_averages(const std::function<double(double)>& f, unsigned n, double T) {

@@ -44,6 +44,7 @@ std::vector<double> walsh_from_blocks(std::vector<double> v);
 std::vector<GiNaC::ex> walsh_from_blocks(std::vector<GiNaC::ex> v);
 /// Block values of a truncated series: v = W^T c.
 std::vector<double> blocks_from_walsh(std::vector<double> c);
+std::vector<GiNaC::ex> blocks_from_walsh(std::vector<GiNaC::ex> c);
 
 /// The 2^n block averages of f on [0, T) by Gauss-Kronrod quadrature (Boost.Math, 15 points
 /// per block, adaptive to 1e-13 relative). f must be finite on [0, T).

@@ -118,6 +118,17 @@ void register_identification_builtins(registry& r) {
             return number_list(id::walsh_from_blocks(id::block_averages(function_of(f, t, b, "the signal"), n)));
         });
     add_builtin(
+        r, section, "walsh_blocks", "walsh_blocks(c)",
+        "The block values of the truncated Walsh series sum_p c_p w_p (2^n coefficients, Paley's ordering): v = W^T c "
+        "(IV.2.10), by the fast Walsh-Hadamard transform; the inverse of walsh_coefficients(values). Series given by "
+        "their Walsh coefficients enter identify() this way.",
+        "(IV.2.5, IV.2.10)", "walsh_blocks([1/3, -1/4, -1/8, 1/16])", 1, 1,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            list out;
+            for (const auto& v : id::blocks_from_walsh(arg_ex_list(a, 0, b))) out.push_back(value(v));
+            return out;
+        });
+    add_builtin(
         r, section, "operational_matrix", "operational_matrix(n)",
         "P_(2^n), the operational matrix of integration in the Walsh basis: int_0^t w = P w (IV.2.18), by the "
         "recursion P_1 = 1/2, P_m = [[P_(m/2), -I/(2m)], [I/(2m), 0]] (IV.2.19); exact, n = 1 .. 8. P = W Q W^T / 2^n "
@@ -153,6 +164,33 @@ void register_identification_builtins(registry& r) {
             const auto u = function_of(arg_ex(a, 2, b), t, b, "the input u");
             const id::measured_system s = id::simulate_system(f, u, coeffs, n);
             return list{value(number_list(s.q)), value(number_list(s.u))};
+        });
+    add_builtin(
+        r, section, "identify_points", "identify_points(q, u, t, n [, [a_1, ..., a_m]])",
+        "The table of the thesis's procedure (IV.2.36, IV.2.45): the values of f at the points q_e, [[q_k, f_k], ...], "
+        "from the linear system for the vector f, neighbours averaged m times to cancel the alternating pole of "
+        "(Q^T)^-m (2^n - m points; docs/identification.md). q and u as in identify; every a_k known (default [0, 0]).",
+        "(IV.2.32-36, IV.2.45)",
+        "identify_points(simulate_system(4*x + x^3, x, 10*sin(2*pi*t), t, 3)[0], 10*sin(2*pi*t), t, 3)", 4, 5,
+        [](const builtin& b, const std::vector<value>& a, context& c) -> value {
+            const GiNaC::symbol& t = arg_symbol(a, 2, b);
+            const unsigned n = unsigned(arg_int(a, 3, b, 2, 16));
+            id::linear_part lin{0.0, 0.0};
+            if (a.size() == 5) {
+                lin.clear();
+                for (const auto& e : arg_ex_list(a, 4, b)) lin.push_back(number_of(e, b, "a coefficient a_k"));
+                if (lin.empty()) throw domain_error(b.name + ": the list of a_k is empty (order m >= 1)");
+            }
+            id::measured_system s;
+            s.q = blocks_of(a[0], t, n, b, "the output q");
+            s.u = blocks_of(a[1], t, n, b, "the input u");
+            const id::identification_report rep = id::identify_values(s, lin, 0);
+            if (!rep.warning.empty()) c.out() << "warning: " << rep.warning << "\n";
+            list out;
+            for (std::size_t k = 0; k < rep.points_q.size(); ++k)
+                out.push_back(value(list{value(GiNaC::ex(GiNaC::numeric(rep.points_q[k]))),
+                                         value(GiNaC::ex(GiNaC::numeric(rep.values_f[k])))}));
+            return out;
         });
     add_builtin(
         r, section, "identify", "identify(q, u, t, n, x, d [, [a_1, ..., a_m] [, method]])",
