@@ -35,7 +35,7 @@ if [ -z "${PLOT_ONLY:-}" ]; then
     rm -f "$conv" "$noise"
 fi
 gp=${SYMREP_GNUPLOT:-gnuplot}
-for m in integral values derivatives values_as_printed; do
+for m in integral values derivatives values_as_printed sindy_stlsq; do
     grep "^$m," "$out/identification_convergence.csv" > "/tmp/idconv_$m.dat" || true
     grep "^$m," "$out/identification_noise.csv" | awk -F, '$2 > 0' > "/tmp/idnoise_$m.dat" || true
 done
@@ -62,7 +62,8 @@ set format x "%.0e"
 set key top left
 plot "/tmp/idnoise_integral.dat" using 2:4 with linespoints title "integral form", \
      "/tmp/idnoise_values.dat" using 2:4 with linespoints title "thesis's values", \
-     "/tmp/idnoise_derivatives.dat" using 2:4 with linespoints title "regression on finite differences"
+     "/tmp/idnoise_derivatives.dat" using 2:4 with linespoints title "regression on finite differences", \
+     "/tmp/idnoise_sindy_stlsq.dat" using 2:4 with linespoints title "SINDy (thresholded least squares, 0.5)"
 set output "$out/identification_cost.png"
 set title "CPU time of one identification against the number of blocks"
 set xlabel "blocks 2^n"

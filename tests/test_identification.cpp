@@ -103,6 +103,24 @@ TEST(Identification, ToeplitzPowersOfQ) {
                     EXPECT_EQ(M(i, j), j >= i ? GiNaC::ex(row[j - i]) : GiNaC::ex(0)) << n << " " << m;
         }
     }
+    // n = 5, 6: Q^m from its row against Q times Q^(m-1), and Q^-m Q^m = I, all exact
+    for (unsigned n = 5; n <= 6; ++n) {
+        const unsigned N = 1U << n;
+        const auto toeplitz = [&](long m) {
+            const auto row = block_pulse_power_row_exact(n, m);
+            GiNaC::matrix M{N, N};
+            for (unsigned i = 0; i < N; ++i)
+                for (unsigned j = i; j < N; ++j) M(i, j) = row[j - i];
+            return M;
+        };
+        const GiNaC::matrix Q = block_pulse_matrix_exact(n);
+        EXPECT_TRUE(equal(toeplitz(1), Q));
+        EXPECT_TRUE(equal(toeplitz(2), Q.mul(Q)));
+        EXPECT_TRUE(equal(toeplitz(3), Q.mul(toeplitz(2))));
+        const GiNaC::matrix I = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(N));
+        EXPECT_TRUE(equal(toeplitz(-1).mul(Q), I));
+        EXPECT_TRUE(equal(toeplitz(-2).mul(toeplitz(2)), I));
+    }
     for (unsigned n : {4U, 10U}) {
         const Eigen::MatrixXd Q = block_pulse_matrix(n);
         const auto N = Eigen::Index(1) << n;
