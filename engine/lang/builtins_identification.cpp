@@ -16,6 +16,7 @@
 #include "identification/walsh_series.h"
 #include "lang/builtins.h"
 #include "numeric/evaluator.h"
+#include "output/printer.h"
 
 namespace symrep::lang {
 
@@ -28,7 +29,7 @@ const char* const section = "Identification (IV.2)";
 double number_of(const GiNaC::ex& e, const builtin& b, const std::string& what) {
     const GiNaC::ex v = e.evalf();
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
-        throw type_error(b.name + ": " + what + " is not a real number: " + message_text(e, 200));
+        throw type_error(b.name + ": " + what + " is not a real number: " + output::print_ex(e));
     return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
 }
 
@@ -43,7 +44,7 @@ std::function<double(double)> function_of(const GiNaC::ex& e, const GiNaC::symbo
             return y;
         };
     } catch (const error& ex) {
-        throw type_error(b.name + ": " + what + " " + message_text(e, 200) + " is not a numeric function of " +
+        throw type_error(b.name + ": " + what + " " + output::print_ex(e) + " is not a numeric function of " +
                          t.get_name() + " (" + ex.what() + ")");
     }
 }
