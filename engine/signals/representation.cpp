@@ -140,7 +140,12 @@ ex signal_of(const representation& R, const coeffs& w, const ex& t) {
         e = exp_product_form(*M, *c, t);  // (IV.1.15) products of the carriers' cosines and sines
     else
         e = R.A->exp(R.d, t);
-    return tidy(functional(R.lambda, R.A->multiply(w, e)));
+    // lambda(w e) = sum_k e_k lambda(w b_k): w times the basis (numbers) instead of w times exp(d t)
+    // (coordinates that are functions of t: the product's reduction expanded them)
+    ex s = 0;
+    for (std::size_t k = 0; k < e.size(); ++k)
+        if (!e[k].is_zero()) s += e[k] * functional(R.lambda, R.A->multiply(w, R.A->basis_vector(k)));
+    return tidy(s);
 }
 
 namespace {
