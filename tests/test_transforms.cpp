@@ -14,6 +14,7 @@
 #include "scalar/scalar.h"
 #include "signals/multicomplex_signals.h"
 #include "signals/response.h"
+#include "transforms/inversion.h"
 #include "transforms/laplace.h"
 #include "transforms/sampled.h"
 #include "numeric/quadrature.h"
@@ -298,4 +299,31 @@ TEST(Transforms, TwoSidedSignals) {
     const coeffs TF = transform_two_sided(A, d, f, g, t).value;
     const coeffs TdF = transform_two_sided(A, d, f.diff(t), g.diff(t), t).value;
     EXPECT_TRUE(same_element(TdF, A->multiply(d, TF)));
+}
+
+// (V.2.36-39, Thm V.2.3) The inversion integral evaluated as an integral: f~(t0) = (f(t0+) + f(t0-))/2
+// from the derived transform, to 1e-12 (the quadratures' estimates are below 1e-8); 1/2 of the jump
+// at 0, 0 before it; refusals for a transform that does not converge on the axis and an improper one.
+TEST(Transforms, InversionIntegralGivesTheMeanOfTheJumps) {
+    const GiNaC::symbol t("t"), s("s");
+    struct item {
+        GiNaC::ex f;
+        double t0, want;
+    };
+    const std::vector<item> items{{GiNaC::exp(-t), 1, std::exp(-1.0)},
+                                  {GiNaC::exp(-t), 0, 0.5},
+                                  {GiNaC::exp(-t), -1, 0},
+                                  {GiNaC::exp(-t) * GiNaC::cos(2 * t), 0.7, std::exp(-0.7) * std::cos(1.4)},
+                                  {GiNaC::exp(-t) * GiNaC::cos(2 * t), 0, 0.5},
+                                  {t * GiNaC::exp(-2 * t), 1.5, 1.5 * std::exp(-3.0)},
+                                  {t * GiNaC::exp(-2 * t), 0, 0}};
+    for (const auto& it : items) {
+        const auto r = transforms::fourier_inversion(transforms::laplace(it.f, t, s), s, it.t0);
+        EXPECT_NEAR(r.value, it.want, 1e-12) << it.f << " at " << it.t0;
+        EXPECT_LT(r.error_estimate, 1e-8) << it.f << " at " << it.t0;
+    }
+    EXPECT_THROW(transforms::fourier_inversion(1 / (s - 1), s, 1), domain_error);
+    EXPECT_THROW(transforms::fourier_inversion(1 / (s * s + 4), s, 1), domain_error);  // on the axis
+    EXPECT_THROW(transforms::fourier_inversion(s / (s + 1), s, 1), domain_error);
+    EXPECT_THROW(transforms::fourier_inversion(1 / (s + GiNaC::symbol("k")), s, 1), domain_error);
 }

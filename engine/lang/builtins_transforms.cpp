@@ -7,6 +7,7 @@
 #include "lang/builtins.h"
 #include "core/error.h"
 #include "transforms/laplace.h"
+#include "transforms/inversion.h"
 #include "transforms/sampled.h"
 
 namespace symrep::lang {
@@ -66,6 +67,22 @@ void register_transforms_builtins(registry& r) {
                                                          GiNaC::I * GiNaC::numeric(F[m].imag())))}));
             }
             return out;
+        });
+    add_builtin(
+        r, section, "fourier_inversion", "fourier_inversion(F, s, t0)",
+        "The inversion integral (1/2 pi) int F(i w) e^(i w t0) dw of a transform F(s) = L f(s) (a proper rational "
+        "function with numeric coefficients and its poles left of the imaginary axis), evaluated as an integral "
+        "(Boost.Math: Ooura-Mori for t0 != 0, exp-sinh at t0 = 0): f~(t0) = (f(t0+) + f(t0-))/2, so 1/2 of the "
+        "jump at t0 = 0 and 0 for t0 < 0 for a causal f. Over the multicomplex algebra (V.2.36-39) it is this "
+        "integral on every idempotent component. Returns [f~(t0), the quadrature's error estimate].",
+        "(V.2.36-39), Thm V.2.3", "fourier_inversion(1/(s + 1), s, 1)", 3, 3,
+        [](const builtin& b, const std::vector<value>& a, context&) -> value {
+            const GiNaC::ex tv = arg_ex(a, 2, b).evalf();
+            if (!GiNaC::is_a<GiNaC::numeric>(tv) || !GiNaC::ex_to<GiNaC::numeric>(tv).is_real())
+                throw type_error(b.name + ": the time t0 must be a real number (usage: " + b.signature + ")");
+            const auto inv = transforms::fourier_inversion(arg_ex(a, 0, b), arg_symbol(a, 1, b),
+                                                           GiNaC::ex_to<GiNaC::numeric>(tv).to_double());
+            return list{value(GiNaC::ex(GiNaC::numeric(inv.value))), value(GiNaC::ex(GiNaC::numeric(inv.error_estimate)))};
         });
     add_builtin(
         r, section, "energy", "energy(f, t)",
