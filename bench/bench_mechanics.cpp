@@ -78,6 +78,20 @@ void BM_Mechanics_DeriveForced(benchmark::State& state) {
 }
 BENCHMARK(BM_Mechanics_DeriveForced)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
 
+// The same forcings on the Coriolis operator r'' + 2 w x r' = f(t) g, where Maxima's desolve has a
+// closed form to compare with (bench/work_precision/maxima_derive.py; docs/performance.md).
+void BM_Mechanics_DeriveForcedCoriolis(benchmark::State& state) {
+    std::ostringstream out, err;
+    lang::session s(out, err);
+    s.evaluate("vector w, g, r0, v0");
+    const std::string stmt = std::string("solve(ode(r'' + 2*w x r' = ") + forcings[state.range(0)] +
+                             ", r(0) = r0, r'(0) = v0))";
+    lang::value v;
+    for (auto _ : state) benchmark::DoNotOptimize(v = s.evaluate(stmt));
+    state.SetLabel(forcings[state.range(0)]);
+}
+BENCHMARK(BM_Mechanics_DeriveForcedCoriolis)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
+
 // Issue 15.2: the exact check of the same problems (the solution derived once, outside the loop);
 // the counter `x_solve` is the check's time over the derivation's, both measured here.
 void BM_Mechanics_CheckForced(benchmark::State& state) {

@@ -42,7 +42,11 @@ if [ -z "${PLOT_ONLY:-}" ]; then
         else
             echo "all,sympy,,,not installed"
         fi
-        if ! command -v maxima >/dev/null; then echo "all,maxima,,,not installed"; fi
+        if command -v maxima >/dev/null; then
+            python3 bench/work_precision/maxima_derive.py --timeout "$sympy_timeout" | tail -n +2
+        else
+            echo "all,maxima,,,not installed"
+        fi
     } > "$out/wp_derivation_others.csv"
 fi
 
