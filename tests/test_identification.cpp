@@ -86,6 +86,21 @@ TEST(Identification, CharacteristicAndMinimalPolynomial) {
     }
 }
 
+// (IV.2.24) P^m = W Q^m W^T / N for m = 2, 3 and the inverse (m = -1, -2), exactly, n <= 5.
+TEST(Identification, PowersAndInverseOfP) {
+    for (unsigned n = 1; n <= 5; ++n) {
+        const unsigned N = 1U << n;
+        const GiNaC::matrix P = operational_matrix_exact(n);
+        const GiNaC::matrix I = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(N));
+        EXPECT_TRUE(equal(operational_matrix_power_exact(n, 1), P)) << n;
+        EXPECT_TRUE(equal(operational_matrix_power_exact(n, 2), P.mul(P))) << n;
+        EXPECT_TRUE(equal(operational_matrix_power_exact(n, 3), P.mul(P).mul(P))) << n;
+        EXPECT_TRUE(equal(operational_matrix_power_exact(n, -1).mul(P), I)) << n;
+        EXPECT_TRUE(equal(operational_matrix_power_exact(n, -2).mul(P.mul(P)), I)) << n;
+        EXPECT_TRUE(equal(operational_matrix_power_exact(n, 0), I)) << n;
+    }
+}
+
 // Q^m from the power series (1/2N)^m ((1 + x)/(1 - x))^m equals the matrix power, for m = 1 .. 4
 // and m = -1, -2 (the inverse), exactly; integrate_blocks agrees with the dense matrices, the
 // FFT path (N > 256) included.

@@ -80,6 +80,28 @@ Eigen::MatrixXd block_pulse_matrix(unsigned n) {
     return Q;
 }
 
+GiNaC::matrix operational_matrix_power_exact(unsigned n, long m) {
+    check_dense(n, 8, "a power of the operational matrix P");
+    const unsigned N = 1U << n;
+    const auto row = block_pulse_power_row_exact(n, m);
+    // (W Q^m W^T)_(p, q) = sum_(i <= j) W(p, i) r_(j - i) W(q, j)
+    GiNaC::matrix out{N, N};
+    std::vector<GiNaC::numeric> WQ(N);
+    for (unsigned p = 0; p < N; ++p) {
+        for (unsigned j = 0; j < N; ++j) {
+            GiNaC::numeric acc = 0;
+            for (unsigned i = 0; i <= j; ++i) acc += walsh_sign(p, i, n) * row[j - i];
+            WQ[j] = acc;
+        }
+        for (unsigned q = 0; q < N; ++q) {
+            GiNaC::numeric acc = 0;
+            for (unsigned j = 0; j < N; ++j) acc += WQ[j] * walsh_sign(q, j, n);
+            out(p, q) = acc / GiNaC::numeric(long(N));
+        }
+    }
+    return out;
+}
+
 std::vector<GiNaC::numeric> block_pulse_power_row_exact(unsigned n, long m) {
     const std::size_t N = std::size_t(1) << n;
     std::vector<GiNaC::numeric> g(N);

@@ -29,6 +29,10 @@ Eigen::MatrixXd operational_matrix(unsigned n);
 GiNaC::matrix block_pulse_matrix_exact(unsigned n);
 Eigen::MatrixXd block_pulse_matrix(unsigned n);
 
+/// P^m for any integer m (m < 0: powers of P^-1), exact: W Q^m W^T / 2^n (IV.2.24), Q^m from its
+/// Toeplitz row; n <= 8.
+GiNaC::matrix operational_matrix_power_exact(unsigned n, long m);
+
 /// The first row of Q^m (any integer m; upper triangular Toeplitz), exact and double, times T^m.
 std::vector<GiNaC::numeric> block_pulse_power_row_exact(unsigned n, long m);
 std::vector<double> block_pulse_power_row(unsigned n, long m, double T = 1);

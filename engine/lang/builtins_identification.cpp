@@ -130,13 +130,20 @@ void register_identification_builtins(registry& r) {
             return out;
         });
     add_builtin(
-        r, section, "operational_matrix", "operational_matrix(n)",
+        r, section, "operational_matrix", "operational_matrix(n [, m])",
         "P_(2^n), the operational matrix of integration in the Walsh basis: int_0^t w = P w (IV.2.18), by the "
         "recursion P_1 = 1/2, P_m = [[P_(m/2), -I/(2m)], [I/(2m), 0]] (IV.2.19); exact, n = 1 .. 8. P = W Q W^T / 2^n "
-        "(IV.2.22-23, W the Walsh functions on the blocks).",
-        "(IV.2.19)", "operational_matrix(2)", 1, 1,
+        "(IV.2.22-23, W the Walsh functions on the blocks). With m: the power P^m for any integer m (m = -1: the "
+        "inverse), through Q^m (IV.2.24, IV.2.51), never a dense inverse.",
+        "(IV.2.19, IV.2.24)", "operational_matrix(2, -1)", 1, 2,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            return GiNaC::ex(id::operational_matrix_exact(unsigned(arg_int(a, 0, b, 1, 8))));
+            const unsigned n = unsigned(arg_int(a, 0, b, 1, 8));
+            if (a.size() == 1) return GiNaC::ex(id::operational_matrix_exact(n));
+            const GiNaC::ex& me = arg_ex(a, 1, b);
+            if (!GiNaC::is_a<GiNaC::numeric>(me) || !GiNaC::ex_to<GiNaC::numeric>(me).is_integer() ||
+                GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(me)) > 64)
+                throw type_error(b.name + ": the power m must be an integer from -64 to 64 (usage: " + b.signature + ")");
+            return GiNaC::ex(id::operational_matrix_power_exact(n, GiNaC::ex_to<GiNaC::numeric>(me).to_long()));
         });
     add_builtin(
         r, section, "block_pulse_matrix", "block_pulse_matrix(n)",

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -380,21 +381,49 @@ bool proved_zero_by_denominators(const GiNaC::ex& x) {
     if (!is_rational_function_of_symbols(x)) return false;
     guard_expansion(x, "simplification", false);
     const denominator_groups d = group_by_denominator(GiNaC::expand(x));
-    // over the product of the largest power of each factor: the numerators are Laurent
-    // polynomials in the symbols (monomial denominators), whose expanded sum is canonical
-    std::map<std::size_t, int> most;
-    for (const auto& [den, num] : d.groups)
-        for (const auto& [i, k] : den) most[i] = std::max(most[i], k);
-    GiNaC::ex n = 0;
-    for (const auto& [den, num] : d.groups) {
-        GiNaC::ex c = num;
-        for (const auto& [i, k] : most) {
-            const auto it = den.find(i);
-            if (const int r = k - (it == den.end() ? 0 : it->second); r > 0) c *= GiNaC::pow(d.bases[i], r);
+    // The groups that share a factor, linked (union-find over the factors): each such component
+    // over the product of the largest power of each of its factors, its numerator expanded (a
+    // Laurent polynomial: monomial denominators) and divided by those powers. When every
+    // component divides out, x is the sum of the quotients, a Laurent polynomial whose expanded
+    // form is canonical: 0 proves x = 0. (Components over coprime factors cancel only that way;
+    // a component that does not divide, or factors shared between components, end the attempt
+    // with false: the caller's full test decides.)
+    std::vector<std::size_t> parent(d.bases.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    const std::function<std::size_t(std::size_t)> root = [&](std::size_t i) {
+        return parent[i] == i ? i : parent[i] = root(parent[i]);
+    };
+    for (const auto& g : d.groups)
+        for (const auto& f : g.first) parent[root(f.first)] = root(g.first.begin()->first);
+    constexpr std::size_t none = std::size_t(-1);  // the groups without a polynomial factor
+    std::map<std::size_t, std::vector<const std::pair<const std::map<std::size_t, int>, GiNaC::ex>*>> components;
+    for (const auto& g : d.groups) components[g.first.empty() ? none : root(g.first.begin()->first)].push_back(&g);
+    GiNaC::ex total = 0;
+    for (const auto& [key, members] : components) {
+        std::map<std::size_t, int> most;
+        for (const auto* g : members)
+            for (const auto& [i, k] : g->first) most[i] = std::max(most[i], k);
+        GiNaC::ex n = 0;
+        for (const auto* g : members) {
+            GiNaC::ex c = g->second;
+            for (const auto& [i, k] : most) {
+                const auto it = g->first.find(i);
+                if (const int r = k - (it == g->first.end() ? 0 : it->second); r > 0) c *= GiNaC::pow(d.bases[i], r);
+            }
+            n += GiNaC::expand(c);
         }
-        n += GiNaC::expand(c);
+        if (key == none || (n = GiNaC::expand(n)).is_zero()) {
+            total += n;
+            continue;
+        }
+        const GiNaC::ex nd = GiNaC::normal(n).numer_denom();  // the monomial denominator apart
+        GiNaC::ex q = GiNaC::expand(nd.op(0));
+        for (const auto& [i, k] : most)
+            for (int j = 0; j < k; ++j)
+                if (!GiNaC::divide(q, d.bases[i], q)) return false;
+        total += GiNaC::expand(q / nd.op(1));
     }
-    return GiNaC::expand(n).is_zero();
+    return GiNaC::expand(total).is_zero();
 }
 
 std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x) {
