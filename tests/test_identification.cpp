@@ -174,6 +174,21 @@ TEST(Identification, WalshSeries) {
     const auto ab = walsh_product(a, b);
     for (std::size_t p = 0; p < 8; ++p) EXPECT_NEAR(ab[p], p == 6 ? 1.0 : 0.0, 1e-15);
     EXPECT_NEAR(walsh_series_value(c.size() ? std::vector<double>{0, 1, 0, 0, 0, 0, 0, 0} : a, 0.7), -1.0, 0);
+    // piecewise polynomials exactly: step(t - 1/3) has the block averages 0, 2/3, 1, 1;
+    // t step(t - 1/2) + t^2 the coefficients 17/24, -5/8; abs(t - 1/2) the mean 1/4
+    const auto st = walsh_from_blocks(block_averages_exact(GiNaC::step(t - GiNaC::numeric(1, 3)), t, 2));
+    EXPECT_EQ(st[0], GiNaC::ex(GiNaC::numeric(2, 3)));
+    const auto sv = block_averages_exact(GiNaC::step(t - GiNaC::numeric(1, 3)), t, 2);
+    EXPECT_EQ(sv[1], GiNaC::ex(GiNaC::numeric(2, 3)));
+    const auto pw = walsh_from_blocks(block_averages_exact(t * GiNaC::step(t - GiNaC::numeric(1, 2)) + t * t, t, 1));
+    EXPECT_EQ(pw[0], GiNaC::ex(GiNaC::numeric(17, 24)));
+    EXPECT_EQ(pw[1], GiNaC::ex(GiNaC::numeric(-5, 8)));
+    EXPECT_EQ(walsh_from_blocks(block_averages_exact(GiNaC::abs(t - GiNaC::numeric(1, 2)), t, 3))[0],
+              GiNaC::ex(GiNaC::numeric(1, 4)));
+    EXPECT_TRUE(is_piecewise_polynomial(GiNaC::abs(2 * t - 1) * t, t));
+    EXPECT_FALSE(is_piecewise_polynomial(GiNaC::step(t * t - 1), t));
+    EXPECT_FALSE(is_piecewise_polynomial(GiNaC::exp(t), t));
+    EXPECT_THROW(block_averages_exact(GiNaC::step(t * t - 1), t, 2), domain_error);
     EXPECT_THROW(walsh_from_blocks(std::vector<double>(6, 1.0)), domain_error);
     EXPECT_THROW(block_averages_exact(GiNaC::sin(t), t, 3), domain_error);
 }

@@ -1,6 +1,7 @@
 // symrep/identification/walsh_series.cpp -- truncated Walsh series (IV.2.1).
 #include "identification/walsh_series.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "algebra/walsh_hadamard.h"
 #include "core/error.h"
+#include "scalar/scalar.h"
 
 namespace symrep::identification {
 
@@ -125,20 +127,101 @@ std::vector<double> block_averages(const std::function<double(double)>& f, unsig
     return v;
 }
 
-std::vector<GiNaC::ex> block_averages_exact(const GiNaC::ex& f, const GiNaC::symbol& t, unsigned n,
-                                            const GiNaC::ex& T) {
-    const GiNaC::ex e = GiNaC::expand(f);
+namespace {
+
+// The breakpoints c in (lo, hi) of step(a t + b) and abs(a t + b) in f (a, b exact, a != 0).
+void breakpoints(const GiNaC::ex& f, const GiNaC::symbol& t, std::vector<GiNaC::numeric>& out) {
+    for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::function>(*it)) continue;
+        const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+        if (name != "step" && name != "abs") continue;
+        const GiNaC::ex u = GiNaC::expand(it->op(0));
+        const GiNaC::ex a = u.coeff(t, 1), b = u.coeff(t, 0);
+        if (!u.is_polynomial(t) || u.degree(t) != 1 || !GiNaC::is_a<GiNaC::numeric>(a) ||
+            !GiNaC::is_a<GiNaC::numeric>(b) || !GiNaC::ex_to<GiNaC::numeric>(a).is_rational() ||
+            !GiNaC::ex_to<GiNaC::numeric>(b).is_rational())
+            throw domain_error("exact Walsh coefficients: " + name + "(" + message_text(it->op(0), 80) +
+                               ") is not of an argument a t + b with rational a != 0 and b");
+        out.push_back(GiNaC::ex_to<GiNaC::numeric>(-b / a));
+    }
+}
+
+// f on an interval where every step() and abs() has a fixed sign: its value there, a polynomial.
+GiNaC::ex piece(const GiNaC::ex& f, const GiNaC::symbol& t, const GiNaC::numeric& mid) {
+    struct fix : GiNaC::map_function {
+        const GiNaC::symbol* t;
+        GiNaC::numeric mid;
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            if (GiNaC::is_a<GiNaC::function>(x)) {
+                const std::string name = GiNaC::ex_to<GiNaC::function>(x).get_name();
+                if (name == "step" || name == "abs") {
+                    const GiNaC::ex u = x.op(0);
+                    const GiNaC::numeric v = GiNaC::ex_to<GiNaC::numeric>(u.subs(*t == mid));
+                    if (name == "step") return v.is_positive() ? 1 : 0;
+                    return v.is_positive() ? u.map(*this) : -u.map(*this);
+                }
+            }
+            return x.map(*this);
+        }
+    } m;
+    m.t = &t;
+    m.mid = mid;
+    return GiNaC::expand(m(f));
+}
+
+GiNaC::ex antiderivative(const GiNaC::ex& e, const GiNaC::symbol& t) {
     if (!e.is_polynomial(t))
-        throw domain_error("exact Walsh coefficients: the signal is not a polynomial in " + GiNaC::ex_to<GiNaC::symbol>(t).get_name() +
-                           " (use samples or a numeric signal)");
-    // the antiderivative F, term by term
+        throw domain_error("exact Walsh coefficients: the signal is not a piecewise polynomial in " + t.get_name() +
+                           " (polynomials, step(a t + b), abs(a t + b)); use samples or a numeric signal");
     GiNaC::ex F = 0;
     for (int d = e.ldegree(t); d <= e.degree(t); ++d) F += e.coeff(t, d) * GiNaC::pow(t, d + 1) / (d + 1);
+    return F;
+}
+
+}  // namespace
+
+bool is_piecewise_polynomial(const GiNaC::ex& f, const GiNaC::symbol& t) {
+    try {
+        std::vector<GiNaC::numeric> cuts;
+        breakpoints(f, t, cuts);
+        for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::function>(*it)) {
+                const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+                if (name != "step" && name != "abs") return false;
+            }
+        return piece(f, t, GiNaC::numeric(1, 3)).is_polynomial(t);  // the pieces have no other functions
+    } catch (const error&) {
+        return false;
+    }
+}
+
+std::vector<GiNaC::ex> block_averages_exact(const GiNaC::ex& f, const GiNaC::symbol& t, unsigned n,
+                                            const GiNaC::ex& T) {
+    if (!GiNaC::is_a<GiNaC::numeric>(T) || !GiNaC::ex_to<GiNaC::numeric>(T).is_rational() ||
+        !GiNaC::ex_to<GiNaC::numeric>(T).is_positive())
+        throw domain_error("exact Walsh coefficients: the period must be a positive rational");
+    std::vector<GiNaC::numeric> cuts;
+    breakpoints(f, t, cuts);
     const std::size_t N = std::size_t(1) << n;
-    const GiNaC::ex h = T / GiNaC::numeric(long(N));
+    const GiNaC::numeric h = GiNaC::ex_to<GiNaC::numeric>(T) / GiNaC::numeric(long(N));
     std::vector<GiNaC::ex> v(N);
-    for (std::size_t k = 0; k < N; ++k)
-        v[k] = GiNaC::normal((F.subs(t == h * GiNaC::numeric(long(k + 1))) - F.subs(t == h * GiNaC::numeric(long(k)))) / h);
+    for (std::size_t k = 0; k < N; ++k) {
+        const GiNaC::numeric lo = h * GiNaC::numeric(long(k)), hi = lo + h;
+        std::vector<GiNaC::numeric> ends{lo};
+        for (const auto& c : cuts)
+            if (c > lo && c < hi) ends.push_back(c);
+        std::sort(ends.begin(), ends.end(), [](const GiNaC::numeric& a, const GiNaC::numeric& b) { return a < b; });
+        ends.erase(std::unique(ends.begin(), ends.end(),
+                               [](const GiNaC::numeric& a, const GiNaC::numeric& b) { return a == b; }),
+                   ends.end());
+        ends.push_back(hi);
+        GiNaC::ex I = 0;
+        for (std::size_t j = 0; j + 1 < ends.size(); ++j) {  // (IV.2.4) piece by piece
+            const GiNaC::ex F = antiderivative(piece(f, t, (ends[j] + ends[j + 1]) / 2), t);
+            I += F.subs(t == ends[j + 1]) - F.subs(t == ends[j]);
+        }
+        v[k] = GiNaC::normal(I / h);
+    }
     return v;
 }
 

@@ -49,10 +49,15 @@ std::vector<GiNaC::ex> blocks_from_walsh(std::vector<GiNaC::ex> c);
 /// The 2^n block averages of f on [0, T) by Gauss-Kronrod quadrature (Boost.Math, 15 points
 /// per block, adaptive to 1e-13 relative). f must be finite on [0, T).
 std::vector<double> block_averages(const std::function<double(double)>& f, unsigned n, double T = 1);
-/// The same, exact, for f a polynomial in t with exact coefficients (symrep::domain_error
-/// otherwise): the blocks' integrals of the antiderivative.
+/// The same, exact, for f a piecewise polynomial in t with exact coefficients: polynomials,
+/// step(a t + b) and abs(a t + b) with rational a, b (symrep::domain_error otherwise); each block
+/// split at the breakpoints inside it, each piece integrated through its antiderivative.
+/// T a positive rational.
 std::vector<GiNaC::ex> block_averages_exact(const GiNaC::ex& f, const GiNaC::symbol& t, unsigned n,
                                             const GiNaC::ex& T = 1);
+
+/// True when block_averages_exact accepts f (a piecewise polynomial in t as above).
+bool is_piecewise_polynomial(const GiNaC::ex& f, const GiNaC::symbol& t);
 
 /// The truncated series sum_p c_p w_p at t in [0, T) (its block value).
 double walsh_series_value(const std::vector<double>& c, double t, double T = 1);

@@ -403,6 +403,8 @@ void register_core_builtins(registry& r) {
         }
         return GiNaC::abs(x);
     });
+    add_elementary(r, "step", "Heaviside step function (1 for x > 0, 0 for x < 0, 1/2 at 0)", "step(-2)",
+                   [](const ex& x) { return GiNaC::step(x); });
     add_elementary(r, "real_part", "real part", "real_part(2 + 3*I)", [](const ex& x) { return GiNaC::real_part(x); });
     add_elementary(r, "imag_part", "imaginary part", "imag_part(2 + 3*I)",
                    [](const ex& x) { return GiNaC::imag_part(x); });

@@ -96,8 +96,8 @@ void register_identification_builtins(registry& r) {
     add_builtin(
         r, section, "walsh_coefficients", "walsh_coefficients(f, t, n) | walsh_coefficients(values)",
         "The 2^n Walsh coefficients c_p = int_0^1 f w_p dt (IV.2.4) of f on [0, 1), Walsh functions in Paley's "
-        "ordering (the one in which P is the recursion IV.2.19). Exact for a polynomial f in t, by Gauss-Kronrod "
-        "quadrature otherwise; from a list of 2^n block values (block averages) by the fast Walsh-Hadamard "
+        "ordering (the one in which P is the recursion IV.2.19). Exact for a piecewise polynomial f in t (polynomials, "
+        "step(a t + b), abs(a t + b) with rational a, b), by Gauss-Kronrod quadrature otherwise; from a list of 2^n block values (block averages) by the fast Walsh-Hadamard "
         "transform, exact for exact values.",
         "(IV.2.4-5, IV.2.10)", "walsh_coefficients(t^2, t, 2)", 1, 3,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
@@ -112,7 +112,7 @@ void register_identification_builtins(registry& r) {
             const unsigned n = unsigned(arg_int(a, 2, b, 1, 16));
             const GiNaC::ex& f = arg_ex(a, 0, b);
             list out;
-            if (GiNaC::expand(f).is_polynomial(t) && !has_matrix(f)) {
+            if (!has_matrix(f) && id::is_piecewise_polynomial(f, t)) {
                 for (const auto& c : id::walsh_from_blocks(id::block_averages_exact(f, t, n))) out.push_back(value(c));
                 return out;
             }
