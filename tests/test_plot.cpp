@@ -59,6 +59,20 @@ TEST(Plot, ListOfScalarsToSvgWithLegendAndLabels) {
     EXPECT_NE(svg.find("sin(t)^2"), std::string::npos);     // the other legend: the expression
 }
 
+// A list of [x, y] pairs among the curves is drawn as points with its legend (identify_points
+// against the true f); a point that is not a pair of numbers is refused by name.
+TEST(Plot, PointsBesideCurves) {
+    const std::string f = fresh_dir("svg") + "/points.svg";
+    test_session t;
+    t.val("plot([[[0, 0], [1/2, 1/4], [1, 1]], exact = x^2], [], x = [0, 1], \"" + f + "\")");
+    const std::string svg = slurp(f);
+    ASSERT_TRUE(is_svg(svg));
+    EXPECT_NE(svg.find(">points<"), std::string::npos);
+    EXPECT_NE(svg.find(">exact<"), std::string::npos);
+    EXPECT_THROW(t.val("plot([[[0, 0], [a, 1]]], [], x = [0, 1], \"" + f + "\")"), symrep::error);
+    EXPECT_THROW(t.val("plot([[[0, 0, 1]]], [], x = [0, 1], \"" + f + "\")"), symrep::error);
+}
+
 TEST(Plot, TrajectoryAndHodographOfVectorFunctions) {
     const std::string d = fresh_dir("vec");
     test_session t;

@@ -157,14 +157,41 @@ void register_plot_builtins(registry& r) {
                 "", "plot([sin(t), cos(w*t)], [w = 2], t = [0, 2*pi], \"/tmp/symrep_plot_example.svg\")", 4, 6,
                 [](const builtin& b, const args_t& a, context& c) -> value {
                     std::vector<ex> es;
-                    if (a[0].is_list()) es = arg_ex_list(a, 0, b);
-                    else es.push_back(arg_ex(a, 0, b));
-                    if (es.empty()) throw type_error(b.name + ": nothing to plot (the list is empty)");
+                    output::plot_spec spec;
+                    if (a[0].is_list()) {
+                        // an entry that is a list of [x, y] pairs is a set of points (a table)
+                        for (const value& v : a[0].as_list()) {
+                            if (!v.is_list()) {
+                                if (!v.is_ex()) throw type_error(b.name + ": a curve must be an expression or a list of [x, y] points");
+                                es.push_back(v.as_ex());
+                                continue;
+                            }
+                            output::plot_spec::point_set ps;
+                            ps.name = "points";
+                            for (const value& pt : v.as_list()) {
+                                const auto number = [&](const value& x) {
+                                    const ex e = x.is_ex() ? x.as_ex().evalf() : ex();
+                                    if (!x.is_ex() || !GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real())
+                                        throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
+                                    return GiNaC::ex_to<GiNaC::numeric>(e).to_double();
+                                };
+                                if (!pt.is_list() || pt.as_list().size() != 2)
+                                    throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
+                                ps.x.push_back(number(pt.as_list()[0]));
+                                ps.y.push_back(number(pt.as_list()[1]));
+                            }
+                            if (ps.x.empty()) throw type_error(b.name + ": an empty list of points");
+                            if (spec.points.size() > 0) ps.name += " " + std::to_string(spec.points.size() + 1);
+                            spec.points.push_back(std::move(ps));
+                        }
+                    } else {
+                        es.push_back(arg_ex(a, 0, b));
+                    }
+                    if (es.empty() && spec.points.empty()) throw type_error(b.name + ": nothing to plot (the list is empty)");
                     const data_values d = read_values(a[1], b, 1);
                     const time_range tr = time_arg(a, 2, b, d);
                     const std::string file = file_arg(a, 3, b, c);
                     const long n = points_arg(a, 4, b, 1000);
-                    output::plot_spec spec;
                     std::vector<ex> fs;
                     for (ex e : es) {
                         std::string name;  // name = e labels the curve
@@ -190,8 +217,8 @@ void register_plot_builtins(registry& r) {
                     }
                     spec.columns = sample(fs, tr, std::size_t(n), b, spec.t);
                     spec.xlabel = print_ex(tr.t);
-                    spec.ylabel = fs.size() == 1 ? spec.names[0] : std::string("value");
-                    if (fs.size() == 1) spec.names.clear();
+                    spec.ylabel = fs.size() == 1 && spec.points.empty() ? spec.names[0] : std::string("value");
+                    if (fs.size() == 1 && spec.points.empty()) spec.names.clear();
                     spec.title = title_arg(a, 5, b, es.size() == 1 ? short_text(es[0]) : std::string("plot"));
                     output::write_plot(spec, file, b.name);
                     return value();

@@ -99,6 +99,11 @@ void write_plot(const plot_spec& spec, const std::string& path, const std::strin
             xyspan = std::max({xyspan, std::abs(spec.columns[0][i]), std::abs(spec.columns[1][i])});
         }
     }
+    for (const auto& ps : spec.points) {
+        if (ps.x.size() != ps.y.size()) throw error(who + ": internal: a point set with different lengths");
+        for (std::size_t i = 0; i < ps.x.size(); ++i)
+            any_finite = any_finite || (std::isfinite(ps.x[i]) && std::isfinite(ps.y[i]));
+    }
     if (!any_finite) throw error(who + ": no sample is a finite number (nothing to draw)");
 
     temp_dir tmp(who);
@@ -116,6 +121,17 @@ void write_plot(const plot_spec& spec, const std::string& path, const std::strin
             d << '\n';
         }
         if (!d) throw error(who + ": cannot write the temporary data file " + data.string());
+        for (std::size_t k = 0; k < spec.points.size(); ++k) {
+            std::ofstream pd(tmp.path / ("points" + std::to_string(k) + ".dat"));
+            pd << std::setprecision(12);
+            for (std::size_t i = 0; i < spec.points[k].x.size(); ++i) {
+                write_number(pd, spec.points[k].x[i]);
+                pd << ' ';
+                write_number(pd, spec.points[k].y[i]);
+                pd << '\n';
+            }
+            if (!pd) throw error(who + ": cannot write the temporary data file of the points");
+        }
     }
     {
         std::ofstream g(script);
@@ -133,11 +149,17 @@ void write_plot(const plot_spec& spec, const std::string& path, const std::strin
         g << "set grid\n";
         const std::string df = quote(data.string());
         if (!spec.three_d) {
-            if (spec.columns.size() > 1) g << "set key below\n";
+            if (spec.columns.size() + spec.points.size() > 1) g << "set key below\n";
             else g << "unset key\n";
             g << "plot ";
-            for (std::size_t k = 0; k < spec.columns.size(); ++k) {
+            for (std::size_t k = 0; k < spec.points.size(); ++k) {  // the marks first, the curves over them
                 if (k) g << ", \\\n     ";
+                g << quote((tmp.path / ("points" + std::to_string(k) + ".dat")).string())
+                  << " using 1:2 with points pointtype 7 pointsize 0.5 title " << quote(spec.points[k].name)
+                  << " noenhanced";
+            }
+            for (std::size_t k = 0; k < spec.columns.size(); ++k) {
+                if (k || !spec.points.empty()) g << ", \\\n     ";
                 g << df << " using 1:" << k + 2 << " with lines linewidth 1.5";
                 if (k < spec.names.size()) g << " title " << quote(spec.names[k]) << " noenhanced";
                 else g << " notitle";

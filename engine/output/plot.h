@@ -27,6 +27,13 @@ struct plot_spec {
     std::vector<std::vector<double>> columns;
     /// 2-D: the legend of each curve (no legend for a single curve); 3-D: unused.
     std::vector<std::string> names;
+    /// 2-D: sets of points (x_k, y_k) drawn as marks over the curves, each with its legend
+    /// (a table such as identify_points' against the curve it estimates).
+    struct point_set {
+        std::string name;
+        std::vector<double> x, y;
+    };
+    std::vector<point_set> points;
 };
 
 /// "gnuplot", or the value of the environment variable SYMREP_GNUPLOT.
