@@ -37,6 +37,19 @@ unsigned check_system(const measured_system& s, const linear_part& a) {
     return n;
 }
 
+// The a_k, every one known (the thesis's procedure, IV.2.45).
+std::vector<double> known(const linear_part& a) {
+    std::vector<double> av;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        if (!a[k])
+            throw domain_error("identify: a_" + std::to_string(k + 1) +
+                               " is unknown; the thesis's procedure (IV.2.45) needs every a_k: use the integral "
+                               "method, which estimates them jointly");
+        av.push_back(*a[k]);
+    }
+    return av;
+}
+
 // sum_i c_i x^i
 double horner(const std::vector<double>& c, double x) {
     double v = 0;
@@ -155,14 +168,7 @@ std::vector<double> fit_polynomial(const std::vector<double>& x, const std::vect
 
 identification_report identify_values(const measured_system& s, const linear_part& a, unsigned degree) {
     check_system(s, a);
-    std::vector<double> av;
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        if (!a[k])
-            throw domain_error("identify: a_" + std::to_string(k + 1) +
-                               " is unknown; the thesis's procedure (IV.2.45) needs every a_k: use the integral "
-                               "method, which estimates them jointly");
-        av.push_back(*a[k]);
-    }
+    const std::vector<double> av = known(a);
     const long m = long(a.size());
     identification_report rep;
     rep.points = s.q.size();
@@ -214,11 +220,7 @@ identification_report identify_values(const measured_system& s, const linear_par
 
 identification_report identify_values_as_printed(const measured_system& s, const linear_part& a, unsigned degree) {
     check_system(s, a);
-    std::vector<double> av;
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        if (!a[k]) throw domain_error("identify: a_" + std::to_string(k + 1) + " is unknown");
-        av.push_back(*a[k]);
-    }
+    const std::vector<double> av = known(a);
     const long m = long(a.size());
     identification_report rep;
     rep.points = s.q.size();

@@ -1,6 +1,7 @@
 // symrep/lang/builtins_identification.cpp -- identification of nonlinear systems with Walsh
 // algebras (thesis IV.2; identification/identify.h): walsh_coefficients, operational_matrix,
 // block_pulse_matrix, simulate_system, identify.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "identification/operational_matrix.h"
 #include "identification/walsh_series.h"
 #include "lang/builtins.h"
+#include "lang/values.h"
 #include "numeric/evaluator.h"
 #include "output/printer.h"
 
@@ -25,13 +27,6 @@ namespace {
 namespace id = symrep::identification;
 
 const char* const section = "Identification (IV.2)";
-
-double number_of(const GiNaC::ex& e, const builtin& b, const std::string& what) {
-    const GiNaC::ex v = e.evalf();
-    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
-        throw type_error(b.name + ": " + what + " is not a real number: " + output::print_ex(e));
-    return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
-}
 
 // A function of t on [0, 1): a compiled closed form (every other symbol is an error, named).
 std::function<double(double)> function_of(const GiNaC::ex& e, const GiNaC::symbol& t, const builtin& b,
@@ -64,12 +59,30 @@ std::vector<double> blocks_of(const value& v, const GiNaC::symbol& t, unsigned n
         std::vector<double> out;
         for (std::size_t k = 0; k < N; ++k) {
             if (!l[k].is_ex()) throw type_error(b.name + ": block value " + std::to_string(k + 1) + " of " + what + " is not a number");
-            out.push_back(number_of(l[k].as_ex(), b, "block value " + std::to_string(k + 1) + " of " + what));
+            out.push_back(to_double(l[k].as_ex(), b, "block value " + std::to_string(k + 1) + " of " + what));
         }
         return out;
     }
     if (!v.is_ex()) throw type_error(b.name + ": " + what + " must be an expression in t or a list of block values");
     return id::block_averages(function_of(v.as_ex(), t, b, what), n);
+}
+
+// The a_k of (IV.2.37) from argument i, default [0, 0] (IV.2.25): numbers are known, symbols unknown.
+id::linear_part linear_part_arg(const std::vector<value>& a, std::size_t i, const builtin& b) {
+    if (a.size() <= i) return {0.0, 0.0};
+    id::linear_part lin;
+    for (const auto& e : arg_ex_list(a, i, b))
+        lin.push_back(GiNaC::is_a<GiNaC::symbol>(e) ? std::optional<double>() : to_double(e, b, "a coefficient a_k"));
+    if (lin.empty()) throw domain_error(b.name + ": the list of a_k is empty (order m >= 1)");
+    return lin;
+}
+
+// The measured output q (argument 0) and input u (argument 1) on 2^n blocks.
+id::measured_system system_arg(const std::vector<value>& a, const GiNaC::symbol& t, unsigned n, const builtin& b) {
+    id::measured_system s;
+    s.q = blocks_of(a[0], t, n, b, "the output q");
+    s.u = blocks_of(a[1], t, n, b, "the input u");
+    return s;
 }
 
 list number_list(const std::vector<double>& xs) {
@@ -166,7 +179,7 @@ void register_identification_builtins(registry& r) {
             std::vector<double> coeffs{0, 0};
             if (a.size() == 6) {
                 coeffs.clear();
-                for (const auto& e : arg_ex_list(a, 5, b)) coeffs.push_back(number_of(e, b, "a coefficient a_k"));
+                for (const auto& e : arg_ex_list(a, 5, b)) coeffs.push_back(to_double(e, b, "a coefficient a_k"));
             }
             const auto f = function_of(arg_ex(a, 0, b), x, b, "f");
             const auto u = function_of(arg_ex(a, 2, b), t, b, "the input u");
@@ -183,16 +196,7 @@ void register_identification_builtins(registry& r) {
         [](const builtin& b, const std::vector<value>& a, context& c) -> value {
             const GiNaC::symbol& t = arg_symbol(a, 2, b);
             const unsigned n = unsigned(arg_int(a, 3, b, 2, 16));
-            id::linear_part lin{0.0, 0.0};
-            if (a.size() == 5) {
-                lin.clear();
-                for (const auto& e : arg_ex_list(a, 4, b)) lin.push_back(number_of(e, b, "a coefficient a_k"));
-                if (lin.empty()) throw domain_error(b.name + ": the list of a_k is empty (order m >= 1)");
-            }
-            id::measured_system s;
-            s.q = blocks_of(a[0], t, n, b, "the output q");
-            s.u = blocks_of(a[1], t, n, b, "the input u");
-            const id::identification_report rep = id::identify_values(s, lin, 0);
+            const id::identification_report rep = id::identify_values(system_arg(a, t, n, b), linear_part_arg(a, 4, b), 0);
             if (!rep.warning.empty()) c.out() << "warning: " << rep.warning << "\n";
             list out;
             for (std::size_t k = 0; k < rep.points_q.size(); ++k)
@@ -217,24 +221,9 @@ void register_identification_builtins(registry& r) {
             const unsigned n = unsigned(arg_int(a, 3, b, 1, 16));
             const GiNaC::symbol& x = arg_symbol(a, 4, b);
             const unsigned d = unsigned(arg_int(a, 5, b, 0, 20));
-            id::linear_part lin{0.0, 0.0};
-            std::vector<GiNaC::ex> unknown_names;
-            if (a.size() >= 7) {
-                lin.clear();
-                for (const auto& e : arg_ex_list(a, 6, b)) {
-                    if (GiNaC::is_a<GiNaC::symbol>(e)) {
-                        lin.push_back(std::nullopt);
-                        unknown_names.push_back(e);
-                    } else {
-                        lin.push_back(number_of(e, b, "a coefficient a_k"));
-                    }
-                }
-                if (lin.empty()) throw domain_error(b.name + ": the list of a_k is empty (order m >= 1)");
-            }
+            const id::linear_part lin = linear_part_arg(a, 6, b);
             const std::string method = a.size() == 8 ? arg_string(a, 7, b) : "integral";
-            id::measured_system s;
-            s.q = blocks_of(a[0], t, n, b, "the output q");
-            s.u = blocks_of(a[1], t, n, b, "the input u");
+            const id::measured_system s = system_arg(a, t, n, b);
             id::identification_report rep;
             if (method == "integral") rep = id::identify_integral(s, lin, d);
             else if (method == "values") rep = id::identify_values(s, lin, d);
@@ -247,7 +236,7 @@ void register_identification_builtins(registry& r) {
                     << "\n";
             if (!rep.warning.empty()) c.out() << "warning: " << rep.warning << "\n";
             const GiNaC::ex f = polynomial(rep.f, x);
-            if (unknown_names.empty()) return f;
+            if (std::all_of(lin.begin(), lin.end(), [](const auto& k) { return k.has_value(); })) return f;
             list as;
             for (double v : rep.a) as.push_back(value(GiNaC::ex(GiNaC::numeric(v))));
             return list{value(f), value(as)};

@@ -170,10 +170,8 @@ void register_plot_builtins(registry& r) {
                             ps.name = "points";
                             for (const value& pt : v.as_list()) {
                                 const auto number = [&](const value& x) {
-                                    const ex e = x.is_ex() ? x.as_ex().evalf() : ex();
-                                    if (!x.is_ex() || !GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real())
-                                        throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
-                                    return GiNaC::ex_to<GiNaC::numeric>(e).to_double();
+                                    if (!x.is_ex()) throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
+                                    return to_double(x.as_ex(), b, "a point's coordinate");
                                 };
                                 if (!pt.is_list() || pt.as_list().size() != 2)
                                     throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");

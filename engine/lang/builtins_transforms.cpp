@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lang/builtins.h"
+#include "lang/values.h"
 #include "core/error.h"
 #include "transforms/laplace.h"
 #include "transforms/inversion.h"
@@ -46,18 +47,10 @@ void register_transforms_builtins(registry& r) {
         "(V.1.1, V.2.26)", "sampled_fourier([1, 0.5, 0.25, 0.125], 1)", 2, 2,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
             const std::vector<GiNaC::ex> xs = arg_ex_list(a, 0, b);
-            const GiNaC::ex& he = arg_ex(a, 1, b);
-            const GiNaC::ex hv = he.evalf();
-            if (!GiNaC::is_a<GiNaC::numeric>(hv) || !GiNaC::ex_to<GiNaC::numeric>(hv).is_real())
-                throw type_error(b.name + ": the step h must be a real number (usage: " + b.signature + ")");
+            const double h = to_double(arg_ex(a, 1, b), b, "the step h");
             std::vector<double> samples;
-            for (std::size_t k = 0; k < xs.size(); ++k) {
-                const GiNaC::ex v = xs[k].evalf();
-                if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
-                    throw type_error(b.name + ": sample " + std::to_string(k + 1) + " is not a real number");
-                samples.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
-            }
-            const double h = GiNaC::ex_to<GiNaC::numeric>(hv).to_double();
+            for (std::size_t k = 0; k < xs.size(); ++k)
+                samples.push_back(to_double(xs[k], b, "sample " + std::to_string(k + 1)));
             const auto F = transforms::sampled_fourier(samples, h);
             list out;
             for (std::size_t m = 0; m <= samples.size() / 2; ++m) {
@@ -77,11 +70,8 @@ void register_transforms_builtins(registry& r) {
         "integral on every idempotent component. Returns [f~(t0), the quadrature's error estimate].",
         "(V.2.36-39), Thm V.2.3", "fourier_inversion(1/(s + 1), s, 1)", 3, 3,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            const GiNaC::ex tv = arg_ex(a, 2, b).evalf();
-            if (!GiNaC::is_a<GiNaC::numeric>(tv) || !GiNaC::ex_to<GiNaC::numeric>(tv).is_real())
-                throw type_error(b.name + ": the time t0 must be a real number (usage: " + b.signature + ")");
             const auto inv = transforms::fourier_inversion(arg_ex(a, 0, b), arg_symbol(a, 1, b),
-                                                           GiNaC::ex_to<GiNaC::numeric>(tv).to_double());
+                                                           to_double(arg_ex(a, 2, b), b, "the time t0"));
             return list{value(GiNaC::ex(GiNaC::numeric(inv.value))), value(GiNaC::ex(GiNaC::numeric(inv.error_estimate)))};
         });
     add_builtin(

@@ -381,20 +381,42 @@ quasi_polynomial quasi_polynomial::derivative() const {
     return r;
 }
 
-quasi_polynomial integral_monomial(unsigned k, const cex& lambda, const GiNaC::ex& t) {
-    if (is_zero_cex(lambda))
-        return quasi_polynomial::monomial({ex(1) / (k + 1), 0}, k + 1, {0, 0}, t);
-    const cex inv = inverse_cex(lambda, "int_0^t tau^k e^(lambda tau) dtau");
-    quasi_polynomial r = quasi_polynomial::constant(0, t);
-    cex invp = inv;  // inv^{j+1}
-    ex ff = 1;       // k!/(k-j)!
+namespace {
+
+cex expand_cex(const cex& z) { return {GiNaC::expand(z.re), GiNaC::expand(z.im)}; }
+
+// The terms of int_0^t tau^k e^(lambda tau) dtau with 1/lambda^(j+1) kept as
+// conj(lambda)^(j+1) / |lambda|^(2(j+1)), the power of |lambda|^2 not expanded: the sums of
+// such terms are brought to their form once, per function of t (real_form), and normal()
+// of every power expanded (|lambda|^2)^(j+1) (60 % of a derivation with t^3 e^(-k t) forcing).
+std::vector<qp_term> integral_monomial_terms(unsigned k, const cex& lambda) {
+    if (is_zero_cex(lambda)) return {{cex(ex(1) / (k + 1), 0), k + 1, cex(0, 0)}};
+    const char* where = "int_0^t tau^k e^(lambda tau) dtau";
+    // 1/lambda = conj(lambda)/n: n = |lambda|^2, or b for lambda = i b, or a for lambda = a
+    const bool imaginary = is_zero_scalar(lambda.re), real = is_zero_scalar(lambda.im);
+    const ex n = real ? tidy(lambda.re) : imaginary ? tidy(lambda.im) : tidy(lambda.norm2());
+    if (!is_nonzero_generic(n, std::string("division in ") + where))
+        throw domain_error(std::string("division by an exact zero in ") + where);
+    const cex conj_lambda = real ? cex(1, 0) : imaginary ? cex(0, -1) : expand_cex(lambda.conj());
+    std::vector<qp_term> out;
+    cex p = conj_lambda;  // conj(lambda)^(j+1)
+    ex ff = 1;            // k!/(k-j)!
     for (unsigned j = 0; j <= k; ++j) {
-        const ex s = (j % 2 == 0 ? ex(1) : ex(-1)) * ff;
-        r = r + quasi_polynomial::monomial(s * invp, k - j, lambda, t);
-        if (j == k) r = r - quasi_polynomial::monomial(s * invp, 0, {0, 0}, t);
+        const ex s = (j % 2 == 0 ? ex(1) : ex(-1)) * ff * GiNaC::pow(n, -int(j + 1));
+        const cex c(s * p.re, s * p.im);
+        out.push_back({c, k - j, lambda});
+        if (j == k) out.push_back({-c, 0, cex(0, 0)});
         ff = ff * ex(k - j);
-        invp = tidy_cex(invp * inv);
+        p = expand_cex(p * conj_lambda);
     }
+    return out;
+}
+
+}  // namespace
+
+quasi_polynomial integral_monomial(unsigned k, const cex& lambda, const GiNaC::ex& t) {
+    quasi_polynomial r = quasi_polynomial::constant(0, t);
+    for (const qp_term& w : integral_monomial_terms(k, lambda)) r = r + quasi_polynomial::monomial(w.c, w.k, w.lambda, t);
     return r;
 }
 
@@ -461,39 +483,6 @@ quasi_polynomial operator*(const ex& s, const quasi_polynomial& f) {
                            "; multiply quasi-polynomials instead");
     return split(s) * f;
 }
-
-namespace {
-
-cex expand_cex(const cex& z) { return {GiNaC::expand(z.re), GiNaC::expand(z.im)}; }
-
-// The terms of int_0^t tau^k e^(lambda tau) dtau with 1/lambda^(j+1) kept as
-// conj(lambda)^(j+1) / |lambda|^(2(j+1)), the power of |lambda|^2 not expanded: the sums of
-// such terms are brought to their form once, per function of t (real_form), and normal()
-// of every power expanded (|lambda|^2)^(j+1) (60 % of a derivation with t^3 e^(-k t) forcing).
-std::vector<qp_term> integral_monomial_terms(unsigned k, const cex& lambda) {
-    if (is_zero_cex(lambda)) return {{cex(ex(1) / (k + 1), 0), k + 1, cex(0, 0)}};
-    const char* where = "int_0^t tau^k e^(lambda tau) dtau";
-    // 1/lambda = conj(lambda)/n: n = |lambda|^2, or b for lambda = i b, or a for lambda = a
-    const bool imaginary = is_zero_scalar(lambda.re), real = is_zero_scalar(lambda.im);
-    const ex n = real ? tidy(lambda.re) : imaginary ? tidy(lambda.im) : tidy(lambda.norm2());
-    if (!is_nonzero_generic(n, std::string("division in ") + where))
-        throw domain_error(std::string("division by an exact zero in ") + where);
-    const cex conj_lambda = real ? cex(1, 0) : imaginary ? cex(0, -1) : expand_cex(lambda.conj());
-    std::vector<qp_term> out;
-    cex p = conj_lambda;  // conj(lambda)^(j+1)
-    ex ff = 1;            // k!/(k-j)!
-    for (unsigned j = 0; j <= k; ++j) {
-        const ex s = (j % 2 == 0 ? ex(1) : ex(-1)) * ff * GiNaC::pow(n, -int(j + 1));
-        const cex c(s * p.re, s * p.im);
-        out.push_back({c, k - j, lambda});
-        if (j == k) out.push_back({-c, 0, cex(0, 0)});
-        ff = ff * ex(k - j);
-        p = expand_cex(p * conj_lambda);
-    }
-    return out;
-}
-
-}  // namespace
 
 quasi_polynomial convolution(const quasi_polynomial& f, const quasi_polynomial& g) {
     quasi_polynomial r = f;

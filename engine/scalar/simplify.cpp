@@ -1,5 +1,6 @@
 // symrep/scalar/simplify.cpp -- tidy, trigonometric signs, arctangents, exp and log of scalars (scalar.h).
 #include "scalar/scalar.h"
+#include "scalar/equality.h"
 
 #include <algorithm>
 #include <cmath>
@@ -284,7 +285,9 @@ GiNaC::ex one_fraction(const GiNaC::ex& x) {
 
 namespace {
 
-// Only symbols, rationals, sums, products and integer powers: a rational function.
+// Only symbols, rationals, sums, products and integer powers: a rational function with rational
+// coefficients (GiNaC's info_flags::rational_function also takes floats and I, which divide()
+// and the exact expansions below must not meet).
 bool is_rational_function_of_symbols(const GiNaC::ex& x) {
     for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it) {
         if (GiNaC::is_a<GiNaC::symbol>(*it) || GiNaC::is_a<GiNaC::add>(*it) || GiNaC::is_a<GiNaC::mul>(*it))
@@ -306,28 +309,6 @@ std::size_t node_count(const GiNaC::ex& x) {
     for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it) ++n;
     return n;
 }
-
-// x at a rational point away from the usual poles (0, +-1, small integers); nullopt at a pole.
-std::optional<GiNaC::numeric> at_rational_point(const GiNaC::ex& x) {
-    GiNaC::exmap point;
-    int k = 0;
-    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it) && !point.count(*it)) {
-            point[*it] = GiNaC::numeric(1009 + 97 * k, 211 + 13 * k);
-            ++k;
-        }
-    try {
-        const GiNaC::ex v = x.subs(point, GiNaC::subs_options::no_pattern);
-        if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nullopt;
-        return GiNaC::ex_to<GiNaC::numeric>(v);
-    } catch (const std::exception&) {  // a denominator vanished there
-        return std::nullopt;
-    }
-}
-
-}  // namespace
-
-namespace {
 
 // The terms of an expanded rational function by their polynomial denominator factors: the
 // factors (sums, expanded, identified up to sign) and, per product of their powers, the sum
@@ -375,10 +356,19 @@ denominator_groups group_by_denominator(const GiNaC::ex& e) {
     return out;
 }
 
+// Seen nonzero at the point of value_at_generic_point (scalar/equality.h): never true for a 0.
+bool seen_nonzero(const GiNaC::ex& x) {
+    static const point_value zero = value_at_generic_point(0);
+    return seen_different(value_at_generic_point(x), zero);
+}
+
 }  // namespace
 
 bool proved_zero_by_denominators(const GiNaC::ex& x) {
     if (!is_rational_function_of_symbols(x)) return false;
+    // most coefficients of a quasi-polynomial are not 0: one evaluation spares them the expansion
+    // (normalize() then brings them to their form anyway)
+    if (seen_nonzero(x)) return false;
     guard_expansion(x, "simplification", false);
     const denominator_groups d = group_by_denominator(GiNaC::expand(x));
     // The groups that share a factor, linked (union-find over the factors): each such component
@@ -449,9 +439,8 @@ std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x) {
         }
         sum += N / D;
     }
-    // the groups may cancel across denominators: a zero at the point sends x to the full test
-    const auto v = at_rational_point(sum);
-    if (!v || v->is_zero()) return std::nullopt;
+    // the groups may cancel across denominators: unless seen nonzero, x goes to the full test
+    if (!seen_nonzero(sum)) return std::nullopt;
     // over a common denominator of low degree one fraction is cheap and often shorter
     // (1/((a + b) a) + 1/((a - b) a) - 2/a^2 is 2 b^2/(a^2 (a^2 - b^2))): the smaller wins
     int lcm_degree = 0;

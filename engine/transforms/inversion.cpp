@@ -17,21 +17,29 @@ namespace symrep::transforms {
 
 namespace {
 
-// The real coefficients c_0 .. c_n of a polynomial in s with numeric coefficients.
-std::vector<double> coefficients(const GiNaC::ex& p, const GiNaC::symbol& s, const char* what) {
+// The real coefficients c_0 .. c_n of a polynomial in s with numeric coefficients (exact where
+// they are rational).
+std::vector<GiNaC::numeric> coefficients(const GiNaC::ex& p, const GiNaC::symbol& s, const char* what) {
     const GiNaC::ex e = GiNaC::expand(p);
     if (!e.is_polynomial(s))
         throw domain_error(std::string("fourier_inversion: the ") + what + " is not a polynomial in " + s.get_name());
-    std::vector<double> c;
+    std::vector<GiNaC::numeric> c;
     for (int k = 0; k <= e.degree(s); ++k) {
-        const GiNaC::ex v = GiNaC::evalf(e.coeff(s, k));
+        const GiNaC::ex ck = e.coeff(s, k);
+        const GiNaC::ex v = GiNaC::is_a<GiNaC::numeric>(ck) ? ck : GiNaC::evalf(ck);
         if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
             throw domain_error(std::string("fourier_inversion: the transform has a coefficient that is not a real "
                                            "number (") + message_text(e.coeff(s, k), 80) +
                                "): give every parameter a value");
-        c.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
+        c.push_back(GiNaC::ex_to<GiNaC::numeric>(v));
     }
     return c;
+}
+
+std::vector<double> doubles(const std::vector<GiNaC::numeric>& c) {
+    std::vector<double> out;
+    for (const auto& x : c) out.push_back(x.to_double());
+    return out;
 }
 
 std::complex<double> horner(const std::vector<double>& c, std::complex<double> z) {
@@ -40,45 +48,42 @@ std::complex<double> horner(const std::vector<double>& c, std::complex<double> z
     return v;
 }
 
+// Every root of sum_k D_k s^k in Re s < 0: the Routh-Hurwitz table, in exact arithmetic for
+// rational coefficients (a root on the axis gives a zero in the first column: not stable).
+bool hurwitz_stable(const std::vector<GiNaC::numeric>& D) {
+    const long n = long(D.size()) - 1;
+    if (D[std::size_t(n)].is_zero()) return false;
+    std::vector<std::vector<GiNaC::numeric>> rows(std::size_t(n + 1));
+    for (long k = n; k >= 0; k -= 2) rows[0].push_back(D[std::size_t(k)]);
+    for (long k = n - 1; k >= 0; k -= 2) rows[1].push_back(D[std::size_t(k)]);
+    const bool positive = D[std::size_t(n)].is_positive();
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        if (r >= 2) {
+            const auto& a = rows[r - 2];
+            const auto& b = rows[r - 1];
+            for (std::size_t j = 0; j + 1 < a.size(); ++j) {
+                const GiNaC::numeric next = j + 1 < b.size() ? b[j + 1] : GiNaC::numeric(0);
+                rows[r].push_back((b[0] * a[j + 1] - a[0] * next) / b[0]);
+            }
+        }
+        if (rows[r].empty() || rows[r][0].is_zero() || rows[r][0].is_positive() != positive) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 inversion_value fourier_inversion(const GiNaC::ex& F, const GiNaC::symbol& s, double t0) {
     const GiNaC::ex nd = GiNaC::normal(F).numer_denom();
-    const std::vector<double> N = coefficients(nd.op(0), s, "numerator"), D = coefficients(nd.op(1), s, "denominator");
-    if (N.size() >= D.size())
+    const std::vector<GiNaC::numeric> Nx = coefficients(nd.op(0), s, "numerator"),
+                                      Dx = coefficients(nd.op(1), s, "denominator");
+    if (Nx.size() >= Dx.size())
         throw domain_error("fourier_inversion: the transform is not proper (degree of the numerator >= degree of the "
                            "denominator): the signal has a Dirac part at 0 (V.2.33-35)");
-    // every pole left of the imaginary axis: the roots of the denominator, numerically
-    {
-        const GiNaC::ex den = GiNaC::expand(nd.op(1));
-        const long n = long(D.size()) - 1;
-        (void)den;
-        // all roots in Re < 0, decided by the Routh-Hurwitz table of the real coefficients
-        std::vector<std::vector<double>> rows(std::size_t(n + 1));
-        for (long k = n; k >= 0; k -= 2) rows[0].push_back(D[std::size_t(k)]);
-        for (long k = n - 1; k >= 0; k -= 2) rows[1].push_back(D[std::size_t(k)]);
-        bool stable = D[std::size_t(n)] != 0;
-        const double sign = D[std::size_t(n)] > 0 ? 1 : -1;
-        for (std::size_t r = 0; stable && r < rows.size(); ++r) {
-            if (r >= 2) {
-                const auto& a = rows[r - 2];
-                const auto& b = rows[r - 1];
-                if (b.empty() || b[0] == 0) {
-                    stable = false;
-                    break;
-                }
-                for (std::size_t j = 0; j + 1 < a.size(); ++j) {
-                    const double next = j + 1 < b.size() ? b[j + 1] : 0.0;
-                    rows[r].push_back((b[0] * a[j + 1] - a[0] * next) / b[0]);
-                }
-                if (rows[r].empty()) rows[r].push_back(0.0);
-            }
-            if (rows[r].empty() || !(sign * rows[r][0] > 0)) stable = false;
-        }
-        if (!stable)
-            throw domain_error("fourier_inversion: the transform has a pole with real part >= 0 (Routh-Hurwitz): the "
-                               "signal does not decay, its Fourier transform is not F(i w) and (V.2.36) does not apply");
-    }
+    if (!hurwitz_stable(Dx))
+        throw domain_error("fourier_inversion: the transform has a pole with real part >= 0 (Routh-Hurwitz): the "
+                           "signal does not decay, its Fourier transform is not F(i w) and (V.2.36) does not apply");
+    const std::vector<double> N = doubles(Nx), D = doubles(Dx);
     const auto Fiw = [&](double w) { return horner(N, {0, w}) / horner(D, {0, w}); };
     inversion_value out;
     if (t0 == 0) {  // f~(0) = (1/pi) int_0^oo Re F(i w) dw (Ooura's sine/cosine need a frequency > 0)
