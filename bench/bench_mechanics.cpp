@@ -117,6 +117,30 @@ void BM_Mechanics_CheckForced(benchmark::State& state) {
 }
 BENCHMARK(BM_Mechanics_CheckForced)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
 
+// Issue 15.2 on the thesis's problems of BM_Mechanics_Derive: check(P, solve(P)) over solve(P).
+void BM_Mechanics_Check(benchmark::State& state) {
+    const application& a = apps[state.range(0)];
+    std::ostringstream out, err;
+    lang::session s(out, err);
+    s.evaluate(a.declarations);
+    s.evaluate(std::string("P := ") + a.problem);
+    const auto t0 = std::chrono::steady_clock::now();
+    s.evaluate("sol := solve(P)");
+    const double solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double check_s = 0;
+    long n = 0;
+    for (auto _ : state) {
+        const auto c0 = std::chrono::steady_clock::now();
+        const lang::value v = s.evaluate("check(P, sol)");
+        check_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+        ++n;
+        if (!v.as_bool()) state.SkipWithError("check(P, sol) is not true");
+    }
+    state.counters["x_solve"] = check_s / double(n) / solve_s;
+    state.SetLabel(app_names[state.range(0)]);
+}
+BENCHMARK(BM_Mechanics_Check)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
 // The Foucault solution at Paris, derived by symrep, in components with the
 // parameters put in; one input t.
 struct foucault_at_paris {

@@ -161,6 +161,40 @@ TEST(CauchyProblem, ForcedProblemsAreCheckedCoordinateFree) {
     EXPECT_FALSE(t.val("check(F, f + t*exp(-t)*sin(2*t)*(w x g)/1000)").as_bool());
 }
 
+// (issue 15.2) The check in the algebra of K = w x: the solution read as c0 P + c1 w x P +
+// c2 w x (w x P) per data vector P (exactly, whatever form it is written in), the residual and the
+// initial values computed on the coefficients (quasi-polynomials), each decided by the scalar zero
+// test. A right residual with wrong initial values, and a solution off by a term the algebra
+// reading cannot place, are refused; the forms the reading does not take go to the vector test.
+TEST(CauchyProblem, TheCheckReadsTheSolutionInTheAlgebraOfK) {
+    test_session t;
+    ASSERT_EQ(t.run("vector w, g, r0, v0; positive w0\n"
+                    "Q := ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = t*exp(-k*t)*g, r(0) = r0, r'(0) = v0)\n"
+                    "q := solve(Q)\n"
+                    "S := ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = t*exp(-k*t)*g, r(0) = v0, r'(0) = r0)\n"
+                    "s := solve(S)"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(Q, q)").as_bool());
+    EXPECT_TRUE(t.val("check(Q, expand(q))").as_bool());  // w (w . g) - |w|^2 g for w x (w x g): read alike
+    EXPECT_TRUE(t.val("check(Q, simplify(q))").as_bool());
+    // s solves the equation of Q but not its initial values: the residual is 0, r(0) is wrong
+    t.out.str("");
+    EXPECT_FALSE(t.val("check(Q, s)").as_bool());
+    EXPECT_NE(t.out.str().find("r(0) differs from its value by -r0 + v0\n"), std::string::npos) << t.out.str();
+    // terms outside the reading (a vector not in the problem, a dot product times a vector)
+    EXPECT_FALSE(t.val("check(Q, q + t^3*r0 x v0)").as_bool());
+    EXPECT_FALSE(t.val("check(Q, q + t^3*(r0 . v0)*w)").as_bool());
+    EXPECT_TRUE(t.val("check(Q, q + (t^3 - t^3)*(r0 . v0)*w)").as_bool());
+    // a coefficient wrong by a term the zero test must see: the residual is not 0
+    EXPECT_FALSE(t.val("check(Q, q + exp(-k*t)*t^5/10^9*(w x (w x g)))").as_bool());
+    // the zero vector as an initial value and a forcing along w itself
+    ASSERT_EQ(t.run("Z := ode(r'' + 2*w x r' + w0^2*r = cos(t)*w + g, r(0) = 0, r'(0) = v0)\nz := solve(Z)"), 0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(Z, z)").as_bool());
+    EXPECT_FALSE(t.val("check(Z, z + t^4*w)").as_bool());
+}
+
 // Cross products along several vectors on one derivative are one operator: the
 // axis is their combination, read off the equation (normalized by the leading
 // coefficient), and the solution is the general one with w = that combination.

@@ -105,8 +105,11 @@ struct solution_check {
     double rounding = 0;
     explicit operator bool() const { return residual_zero && initial_ok; }
 };
-/// Exact check (vector equality by components, see vector.h); with floating-point
-/// numbers, exact up to rounding (solution_check::rounding).
+/// Exact check. First in the algebra of K (issue 15.2): s read as sum_P c0 P + c1 K P + c2 K^2 P
+/// over the data vectors, residual and initial values computed on the quasi-polynomial
+/// coefficients, each decided by the scalar zero test; what that does not prove is decided
+/// coordinate-free, at a point (seen nonzero) or by components (vector equality, see
+/// vector.h). With floating-point numbers, exact up to rounding (solution_check::rounding).
 solution_check check(const cauchy_problem& P, const GiNaC::ex& s);
 /// True when e holds a floating-point number (a value read as 9.81 or 1e-3).
 bool has_float(const GiNaC::ex& e);

@@ -34,7 +34,16 @@ cex cpow(const cex& z, unsigned n) {
 
 // Real and imaginary part of an expression free of t. Symbols are read as real;
 // complex numerics (3 + 2 I) are split exactly.
+bool has_complex_number(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_real()) return true;
+    return false;
+}
+
 cex split(const ex& e) {
+    // symbols are real: without a complex number e is its real part, kept as it is (normalize()
+    // tidies the coefficients once, when the form is read)
+    if (!has_complex_number(e)) return {e, ex(0)};
     if (GiNaC::is_a<GiNaC::numeric>(e)) {
         const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
         return {GiNaC::real(n), GiNaC::imag(n)};
@@ -58,11 +67,8 @@ cex split(const ex& e) {
         const cex p = cpow(b, unsigned(n < 0 ? -n : n));
         return n < 0 ? inverse_cex(p, "a negative power") : p;
     }
-    // functions and other atoms: real unless they contain a complex number
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_real())
-            return {tidy(GiNaC::real_part(e)), tidy(GiNaC::imag_part(e))};
-    return {e, ex(0)};
+    // functions and other atoms holding a complex number
+    return {tidy(GiNaC::real_part(e)), tidy(GiNaC::imag_part(e))};
 }
 
 bool contains(const ex& e, const ex& t) { return e.has(t); }
@@ -363,12 +369,14 @@ GiNaC::ex quasi_polynomial::real_form(const std::vector<qp_term>& terms, bool ti
     return im.is_zero() ? re : re + GiNaC::I * im;
 }
 
-cex quasi_polynomial::at_zero() const {
-    normalize();
+cex quasi_polynomial::at_zero() const { return tidy_cex(at_zero_untidied()); }
+
+cex quasi_polynomial::at_zero_untidied() const {
+    // the sum of the t^0 coefficients, raw or normalized alike (no need to normalize first)
     cex r(ex(0), ex(0));
     for (const auto& u : terms_)
         if (u.k == 0) r += u.c;
-    return tidy_cex(r);
+    return r;
 }
 
 quasi_polynomial quasi_polynomial::derivative() const {

@@ -101,6 +101,9 @@ public:
 
     /// Value at t = 0 (complex pair).
     cex at_zero() const;
+    /// The same value as the raw sum of the t^0 coefficients (not tidied), for a caller that
+    /// decides its zero itself.
+    cex at_zero_untidied() const;
     /// d/dt.
     quasi_polynomial derivative() const;
     /// int_0^t f(tau) dtau, closed form (see the generic reading above).
