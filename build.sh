@@ -19,7 +19,11 @@ MAIN_SCRIPT=examples/foucault.symrep
 
 PACKAGES=(g++ make cmake pkg-config
           libginac-dev libcln-dev libeigen3-dev libboost-dev
-          libgtest-dev libgmock-dev libbenchmark-dev libreadline-dev gnuplot-nox tmux)
+          libgtest-dev libgmock-dev libbenchmark-dev libreadline-dev gnuplot-nox tmux
+          # the Python module, the Jupyter kernel and the Dask example (docs/python.md)
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-sympy
+          python3-ipykernel python3-jupyter-client python3-nbformat python3-nbconvert
+          python3-dask python3-distributed)
 
 deps() {
     local missing=()
@@ -46,7 +50,8 @@ build() {
 # -DSYMREP_SANITIZE=ON, on $1 inputs (default: its own, 10000): a crash, a
 # sanitizer report or a runaway statement fails it.
 sanitized_robustness() {
-    cmake -S . -B "$ASAN_BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSYMREP_SANITIZE=ON -DSYMREP_BUILD_BENCH=OFF >/dev/null
+    cmake -S . -B "$ASAN_BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSYMREP_SANITIZE=ON -DSYMREP_BUILD_BENCH=OFF \
+          -DSYMREP_BUILD_PYTHON=OFF >/dev/null
     cmake --build "$ASAN_BUILD_DIR" -j"$JOBS" --target symrep_robustness
     SYMREP_FUZZ_LINES=${1:-} "$ASAN_BUILD_DIR"/symrep_robustness
 }

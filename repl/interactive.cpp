@@ -33,6 +33,7 @@
 #include <readline/history.h>
 #include <readline/readline.h>
 
+#include "lang/help.h"
 #include "lang/interpreter.h"
 #include "syntax/lexer.h"
 
@@ -154,20 +155,10 @@ char** complete(const char* text, int start, int) {
     }
     if (start > 0 && rl_line_buffer[start - 1] == '"') return nullptr;  // other strings
     const std::string prefix(text);
-    g_candidates.clear();
+    g_candidates = lang::completions(*g_session, prefix, start == 0);
     std::vector<std::string> functions;
-    auto consider = [&](const std::string& name, bool function) {
-        if (name.rfind(prefix, 0) != 0) return;
-        g_candidates.push_back(name);
-        if (function) functions.push_back(name);
-    };
-    for (const auto* b : g_session->builtins().all()) consider(b->name, true);
-    for (const auto& v : g_session->variable_names()) consider(v, false);
-    for (const char* k : {"vector", "positive", "true", "false", "pi", "I"}) consider(k, false);
-    if (start == 0)
-        for (const char* c : {"help", "quit", "exit"}) consider(c, false);
-    std::sort(g_candidates.begin(), g_candidates.end());
-    g_candidates.erase(std::unique(g_candidates.begin(), g_candidates.end()), g_candidates.end());
+    for (const auto& c : g_candidates)
+        if (g_session->builtins().find(c)) functions.push_back(c);
     if (g_candidates.empty()) return nullptr;
     // a function name completes with its '(', a name with nothing after it
     rl_completion_append_character = g_candidates.size() == 1 && !functions.empty() ? '(' : '\0';
@@ -271,24 +262,13 @@ void help_on(session& s, const std::string& name) {
                                      : name + " leaves symrep (so does Ctrl-D)\n");
         return;
     }
-    const auto* b = s.builtins().find(name);
-    if (!b) {
-        std::string msg = "no function named '" + name + "'";
-        const auto near = lang::similar_builtin_names(s.builtins(), name);
-        if (!near.empty()) {
-            msg += "; did you mean ";
-            for (std::size_t i = 0; i < near.size(); ++i) msg += (i ? ", " : "") + near[i];
-            msg += "?";
-        } else {
-            msg += " (help lists all functions)";
-        }
-        std::cerr << msg << "\n";
+    const std::string text = lang::help_text(s.builtins(), name);
+    if (text.empty()) {
+        std::cerr << lang::unknown_builtin_message(s.builtins(), name) << "\n";
         std::cerr.flush();
         return;
     }
-    std::cout << b->signature << "    [" << b->section << "]\n  " << b->summary << "\n";
-    if (!b->equation.empty()) std::cout << "  Thesis: " << b->equation << "\n";
-    if (!b->example.empty()) std::cout << "  Example: " << b->example << "\n";
+    std::cout << text;
 }
 
 /// Handles a command line; false when the line is not a command.

@@ -30,6 +30,9 @@ public:
     virtual GiNaC::ex symbol(const std::string& name) = 0;
     /// Where print() and friends write.
     virtual std::ostream& out() = 0;
+    /// Told of every file a builtin writes (plot, trajectory, hodograph): front-ends show the
+    /// pictures of a statement (the Jupyter kernel). The full path.
+    virtual void wrote_file(const std::string& path) {}
 };
 
 struct builtin {

@@ -141,6 +141,7 @@ value space_curve(const builtin& b, const args_t& a, context& c, bool derivative
         spec.title = title_arg(a, 5, b, "trajectory, " + range_text(tr));
     }
     output::write_plot(spec, file, b.name);
+    c.wrote_file(file);
     return value();
 }
 
@@ -219,6 +220,7 @@ void register_plot_builtins(registry& r) {
                     if (fs.size() == 1 && spec.points.empty()) spec.names.clear();
                     spec.title = title_arg(a, 5, b, es.size() == 1 ? short_text(es[0]) : std::string("plot"));
                     output::write_plot(spec, file, b.name);
+                    c.wrote_file(file);
                     return value();
                 });
     add_builtin(r, section, "trajectory", "trajectory(r, values, t = [t0, t1], \"file.svg\" [, n [, \"title\"]])",

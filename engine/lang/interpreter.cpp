@@ -162,6 +162,16 @@ void session::report(const source_location& where, const std::string& message) {
     ++failures_;
     const std::string msg = escape_controls(shorten_numbers(message));
     if (opts_.stop_on_error) stopped_ = true;
+    {
+        reported_error r{msg, where, {}};
+        if (auto it = sources_.find(where.file); it != sources_.end()) {
+            const int first = source_line_.count(where.file) ? source_line_[where.file] : 1;
+            if (where.line >= first) r.source_line = line_of(it->second, where.line - first + 1);
+            if (!r.source_line.empty() && r.source_line.back() == '\r') r.source_line.pop_back();
+        }
+        errors_.push_back(std::move(r));
+        if (on_error_) on_error_(errors_.back());
+    }
     if (opts_.format == output_options::json) {
         *err_ << "{\"error\": " << json_quote(msg) << ", \"file\": " << json_quote(where.file)
               << ", \"line\": " << where.line << ", \"column\": " << where.column << "}\n";
@@ -600,6 +610,8 @@ void session::exec(const node& stmt, bool echo) {
     value v = eval(stmt);
     if (!echo || v.is_none()) return;
     results_.push_back(v);
+    if (on_result_) on_result_(v);
+    if (!opts_.print_results) return;
     switch (opts_.format) {
         case output_options::text:
             if (labels_) *out_ << "%" << results_.size() << " = ";

@@ -17,6 +17,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -62,6 +63,9 @@ struct output_options {
     bool stop_on_error = false;
     /// Follow each text error report with its source line and a caret under the column.
     bool caret = false;
+    /// Expression statements write their value to out(); off, they are only recorded in
+    /// results() and passed to the result observer (front-ends that show them themselves).
+    bool print_results = true;
     /// Seconds a statement may run (0: no limit); checked at every evaluation step
     /// of the language, so one long library call is not cut short.
     double time_limit = 0;
@@ -111,6 +115,35 @@ public:
     const output_options& options() const { return opts_; }
     /// True once a statement failed with options().stop_on_error set.
     bool stopped() const { return stopped_; }
+
+    // --- for front-ends (the Python module, the Jupyter kernel) ----------------
+    /// One error report, as written to err(): the bare message, its place and the source line
+    /// it points into (empty when unknown).
+    struct reported_error {
+        std::string message;
+        source_location where;
+        std::string source_line;
+    };
+    /// Every error reported so far, in order (errors().size() == failures()).
+    const std::vector<reported_error>& errors() const { return errors_; }
+    /// Every file a builtin wrote so far (plot, trajectory, hodograph), full paths, in order.
+    const std::vector<std::string>& files_written() const { return files_written_; }
+    void wrote_file(const std::string& path) override {
+        files_written_.push_back(path);
+        if (on_file_) on_file_(path);
+    }
+    /// Observers for front-ends that show a cell's output in order (the Jupyter kernel):
+    /// called with each printed result (before it is written to out()), each error report
+    /// and each file written. Empty functions: none.
+    void observe(std::function<void(const value&)> on_result, std::function<void(const reported_error&)> on_error,
+                 std::function<void(const std::string&)> on_file) {
+        on_result_ = std::move(on_result);
+        on_error_ = std::move(on_error);
+        on_file_ = std::move(on_file);
+    }
+    /// Lets a session stopped by options().stop_on_error run again (a front-end that stops
+    /// each cell at its first error).
+    void resume() { stopped_ = false; }
 
     // --- previous results ------------------------------------------------------
     /// The values printed by expression statements so far, in order: results()[k-1]
@@ -178,6 +211,11 @@ private:
     void forget_failed(const std::string& name, const std::string& where);
     int run_text(const std::string& text, const std::string& name, int first_line);
     std::vector<value> results_;  ///< %1, %2, ...
+    std::vector<reported_error> errors_;
+    std::function<void(const value&)> on_result_;
+    std::function<void(const reported_error&)> on_error_;
+    std::function<void(const std::string&)> on_file_;
+    std::vector<std::string> files_written_;
     std::chrono::steady_clock::time_point statement_start_;  ///< for options().time_limit
     unsigned ticks_ = 0;
     bool labels_ = false;

@@ -565,7 +565,10 @@ rewrite_result rule_set::rewrite(const ex& e, std::size_t max_steps) const {
 
 std::string default_rules_dir() {
     if (const char* d = std::getenv("SYMREP_RULES_DIR"); d && *d) return d;
-    return std::string(SYMREP_SOURCE_DIR) + "/rules";
+    // the source tree's rules/ (the build tree's programs and tests), else the installed copy
+    const std::string source = std::string(SYMREP_SOURCE_DIR) + "/rules";
+    if (std::filesystem::is_directory(source)) return source;
+    return SYMREP_RULES_INSTALL_DIR;
 }
 
 const rule_set& default_rules() {

@@ -124,7 +124,8 @@ private:
 };
 
 /// The folder of the shipped rule files: $SYMREP_RULES_DIR if set, else
-/// SYMREP_SOURCE_DIR/rules.
+/// SYMREP_SOURCE_DIR/rules when that folder exists (the build tree), else the
+/// installed copy (<prefix>/share/symrep/rules, docs/library.md).
 std::string default_rules_dir();
 
 /// The shipped rules (default_rules_dir()/vector.rules), read and checked once
