@@ -159,6 +159,8 @@ public:
 
     // --- state ---------------------------------------------------------------
     void set(const std::string& name, value v);
+    /// Removes a variable (a front-end's temporaries); false when it was not assigned.
+    bool erase(const std::string& name) { return vars_.erase(name) > 0; }
     /// The variable's value, or nullptr when unassigned.
     const value* get(const std::string& name) const;
     /// The builtins; tests and embedders may add their own.

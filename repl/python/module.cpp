@@ -40,7 +40,7 @@ namespace {
 struct session_state {
     std::ostringstream out, err;
     lang::session s{out, err};
-    long temporaries = 0;
+    long next_temporary = 0;
 };
 using state_ptr = std::shared_ptr<session_state>;
 
@@ -92,7 +92,8 @@ py_value eval(const state_ptr& st, const std::string& code) {
     std::string message, file, source;
     int line = 0, column = 0;
     {
-        py::gil_scoped_release nogil;
+        // the GIL stays held: GiNaC is not thread safe (docs/library.md), so no other Python
+        // thread may enter the engine meanwhile; SIGINT reaches the engine's flag regardless
         interruptible guard;
         try {
             v = st->s.evaluate(code);
@@ -109,12 +110,26 @@ py_value eval(const state_ptr& st, const std::string& code) {
     return {std::move(v), st};
 }
 
-// A name for a value in the session: operations and calls are statements over such names.
-std::string bind_temporary(const state_ptr& st, const lang::value& v) {
-    const std::string name = "__py" + std::to_string(st->temporaries++ % 64);
-    st->s.set(name, v);
-    return name;
-}
+// Names for values in the session, removed again when the statement over them has run:
+// operations and calls are statements over such names.
+class temporaries {
+public:
+    explicit temporaries(state_ptr st) : st_(std::move(st)) {}
+    temporaries(const temporaries&) = delete;
+    temporaries& operator=(const temporaries&) = delete;
+    ~temporaries() {
+        for (const std::string& n : names_) st_->s.erase(n);
+    }
+    std::string operator()(const lang::value& v) {
+        names_.push_back("__py" + std::to_string(st_->next_temporary++));
+        st_->s.set(names_.back(), v);
+        return names_.back();
+    }
+
+private:
+    state_ptr st_;
+    std::vector<std::string> names_;
+};
 
 // A Python argument as a language value: Value, bool, int, float, Fraction-like (numerator /
 // denominator), str (a string value), list or tuple (a list).
@@ -146,14 +161,16 @@ lang::value from_python(const state_ptr& st, const py::handle& x) {
 
 // name(args...) evaluated in the session
 py_value call(const state_ptr& st, const std::string& name, const std::vector<lang::value>& args) {
+    temporaries tmp(st);
     std::string code = name + "(";
-    for (std::size_t i = 0; i < args.size(); ++i) code += (i ? ", " : "") + bind_temporary(st, args[i]);
+    for (std::size_t i = 0; i < args.size(); ++i) code += (i ? ", " : "") + tmp(args[i]);
     return eval(st, code + ")");
 }
 
 py_value binary(const py_value& a, const py::object& b, const std::string& op, bool reflected) {
     const lang::value other = from_python(a.state, b);
-    const std::string x = bind_temporary(a.state, a.v), y = bind_temporary(a.state, other);
+    temporaries tmp(a.state);
+    const std::string x = tmp(a.v), y = tmp(other);
     return eval(a.state, reflected ? "(" + y + ") " + op + " (" + x + ")" : "(" + x + ") " + op + " (" + y + ")");
 }
 
@@ -179,10 +196,11 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
         if (!values.is_none()) {
             // name = value pairs read by the language (vectors as [x, y, z])
             const py::dict dv = values.cast<py::dict>();
+            temporaries tmp(st);
             std::string list = "[";
             bool first = true;
             for (const auto& [k, v] : dv) {
-                list += (first ? "" : ", ") + k.cast<std::string>() + " = " + bind_temporary(st, from_python(st, v));
+                list += (first ? "" : ", ") + k.cast<std::string>() + " = " + tmp(from_python(st, v));
                 first = false;
             }
             const lang::value vl = st->s.evaluate(list + "]");
@@ -228,7 +246,6 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, bool stabl
     const std::size_t k = c.inputs.size();
     std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>> cols;
     std::size_t n = 1;
-    bool any_array = false;
     for (std::size_t i = 0; i < c.names.size(); ++i) {
         if (!kw.contains(c.names[i].c_str()))
             throw symrep::type_error("missing input '" + c.names[i] + "'");
@@ -236,8 +253,8 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, bool stabl
         if (!a) throw symrep::type_error("input '" + c.names[i] + "' is not numeric");
         const std::size_t w = c.widths[i];
         std::size_t len = 1;
-        if (w == 1 && a.ndim() == 1) len = std::size_t(a.shape(0)), any_array = true;
-        else if (w == 3 && a.ndim() == 2 && a.shape(1) == 3) len = std::size_t(a.shape(0)), any_array = true;
+        if (w == 1 && a.ndim() == 1) len = std::size_t(a.shape(0));
+        else if (w == 3 && a.ndim() == 2 && a.shape(1) == 3) len = std::size_t(a.shape(0));
         else if (!(w == 1 && a.ndim() == 0) && !(w == 3 && a.ndim() == 1 && a.shape(0) == 3))
             throw symrep::type_error("input '" + c.names[i] + "' must be " +
                                      (w == 1 ? "a number or a 1-D array" : "3 numbers or an n x 3 array"));
@@ -274,15 +291,14 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, bool stabl
     py::array_t<double> out = m == 1 ? py::array_t<double>(std::vector<py::ssize_t>{py::ssize_t(n)})
                                      : py::array_t<double>(std::vector<py::ssize_t>{py::ssize_t(n), py::ssize_t(m)});
     double* o = out.mutable_data();
-    {
+    if (stable) {
+        // its exact tier uses GiNaC: the GIL stays held
+        for (std::size_t r = 0; r < n; ++r) c.stable->eval(in.data() + r * k, o + r * m);
+    } else {
+        // doubles only, an immutable program (thread safe): other Python threads run meanwhile
         py::gil_scoped_release nogil;
-        if (stable) {
-            for (std::size_t r = 0; r < n; ++r) c.stable->eval(in.data() + r * k, o + r * m);
-        } else {
-            c.f.eval_many(in.data(), o, n);
-        }
+        c.f.eval_many(in.data(), o, n);
     }
-    if (!any_array && m == 1) return out;  // shape (1,): the caller's scalar call
     return out;
 }
 
@@ -318,8 +334,7 @@ PYBIND11_MODULE(_symrep, m) {
                 s.options().print_results = false;
                 s.options().caret = false;
                 {
-                    py::gil_scoped_release nogil;
-                    interruptible guard;
+                    interruptible guard;  // the GIL held, as in eval()
                     s.run_string(code, name);
                 }
                 flush();
@@ -448,14 +463,29 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__truediv__", [](const py_value& a, const py::object& b) { return binary(a, b, "/", false); })
         .def("__rtruediv__", [](const py_value& a, const py::object& b) { return binary(a, b, "/", true); })
         .def("__pow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", false); })
-        .def("__neg__", [](const py_value& a) { return eval(a.state, "-(" + bind_temporary(a.state, a.v) + ")"); })
+        .def("__neg__",
+             [](const py_value& a) {
+                 temporaries tmp(a.state);
+                 return eval(a.state, "-(" + tmp(a.v) + ")");
+             })
         .def("cross", [](const py_value& a, const py::object& b) { return binary(a, b, "x", false); },
              "The cross product a x b (vectors).")
         .def("dot", [](const py_value& a, const py::object& b) { return binary(a, b, ".", false); },
              "The dot product a . b (vectors).")
-        .def("__eq__", [](const py_value& a, const py::object& b) {
-            // exact equality as the language decides it (==); an undecided comparison raises
-            return binary(a, b, "==", false).v.as_bool();
+        .def("__eq__", [](const py_value& a, const py::object& b) -> py::object {
+            // exact equality as the language decides it (==); an undecided comparison raises;
+            // None and objects that are no values of the language are not equal
+            if (b.is_none()) return py::bool_(false);
+            lang::value other;
+            try {
+                other = from_python(a.state, b);
+            } catch (const symrep::type_error&) {
+                return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            }
+            temporaries tmp(a.state);
+            const std::string x = tmp(a.v), y = tmp(other);
+            const py_value r = eval(a.state, "(" + x + ") == (" + y + ")");
+            return py::bool_(r.v.is_bool() && r.v.as_bool());
         })
         .def("__hash__", [](const py_value& v) { return py::hash(py::str(lang::print_value(v.v, true))); })
         .def(

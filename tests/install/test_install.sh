@@ -52,6 +52,12 @@ for f in "$libdir/libsymrep_interrupt.a" \
          "$inc/numeric/verify.h" "$inc/output/printer.h" "$inc/vector/vector.h" "$inc/lang/interpreter.h"; do
     [[ -f $f ]] || fail "not installed: ${f#"$prefix"/}"
 done
+# the program, run from the prefix: it answers and finds the installed rules (SYMREP_RULES_DIR as
+# the docs say for a prefix other than the configured one)
+[[ -x $prefix/bin/symrep ]] || fail "not installed: bin/symrep"
+out=$(SYMREP_RULES_DIR=$prefix/share/symrep/rules "$prefix/bin/symrep" -e 'vector a, b; rewrite(a x (a x b))' 2>&1) ||
+    fail "bin/symrep -e ... failed: $out"
+[[ $out == "(a . b)*a - |a|^2*b" ]] || fail "bin/symrep gave: $out"
 echo "installed: $(find "$inc" -name '*.h' | wc -l) headers," \
      "$(find "$libdir" -maxdepth 1 -name 'libsymrep_*.a' | wc -l) libraries," \
      "$(find "$prefix/share/symrep/rules" -name '*.rules' | wc -l) rule file(s)"

@@ -67,6 +67,9 @@ def test_values_have_operations_and_builtins_as_methods(s):
         w.no_such_builtin
     # Python numbers go in exactly
     assert (s.eval("x") * Fraction(1, 3)).text in ("1/3*x", "x/3")
+    # operations leave no temporaries behind; None and foreign objects are not equal
+    assert [v for v in s.variables() if v.startswith("__")] == []
+    assert not (w == None) and w != object()  # noqa: E711
     s.set("k", Fraction(2, 7))
     assert s.get("k").to_python() == Fraction(2, 7)
     assert s.get("nothing_here") is None
