@@ -188,7 +188,18 @@ struct compiled {
 
 compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::string>& inputs,
                  const py::object& values, bool stable) {
-    if (!e.v.is_ex()) raise_error("compile: the closed form must be an expression, not " + e.v.a_kind(), "", 0, 0, "");
+    // an expression (a scalar, a vector: its components) or a list of them (flattened)
+    std::vector<GiNaC::ex> forms;
+    std::function<bool(const lang::value&)> collect = [&](const lang::value& x) {
+        if (x.is_ex()) return forms.push_back(x.as_ex()), true;
+        if (!x.is_list()) return false;
+        for (const lang::value& y : x.as_list())
+            if (!collect(y)) return false;
+        return true;
+    };
+    if (!collect(e.v))
+        raise_error("compile: the closed form must be an expression or a list of them, not " + e.v.a_kind(), "", 0,
+                    0, "");
     compiled c;
     std::string message;
     try {
@@ -227,8 +238,9 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
                 c.widths.push_back(1);
             }
         }
-        const GiNaC::ex x = lang::put_values(e.v.as_ex(), d);
-        const std::vector<GiNaC::ex> outs = lang::components(x);
+        std::vector<GiNaC::ex> outs;
+        for (const GiNaC::ex& form : forms)
+            for (const GiNaC::ex& x : lang::components(lang::put_values(form, d))) outs.push_back(x);
         c.f = num::compile(outs, in);
         if (stable) c.stable = std::make_shared<num::stable_function>(outs, in);
         c.n_outputs = outs.size();
@@ -463,6 +475,7 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__truediv__", [](const py_value& a, const py::object& b) { return binary(a, b, "/", false); })
         .def("__rtruediv__", [](const py_value& a, const py::object& b) { return binary(a, b, "/", true); })
         .def("__pow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", false); })
+        .def("__rpow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", true); })
         .def("__neg__",
              [](const py_value& a) {
                  temporaries tmp(a.state);

@@ -75,6 +75,28 @@ def test_values_have_operations_and_builtins_as_methods(s):
     assert s.get("nothing_here") is None
 
 
+def test_truth_values_numbers_and_lists(s):
+    assert bool(s.eval("1 < 2")) is True
+    assert not s.eval("x^2 - 1 == (x - 1)*(x + 1) + 1")
+    with pytest.raises(TypeError, match="truth value"):
+        bool(s.eval("x + 1"))  # never a guess
+    assert float(s.eval("sqrt(2)")) == pytest.approx(2**0.5, rel=1e-15)
+    assert float(s.eval("3/4")) == 0.75
+    with pytest.raises(TypeError):
+        float(s.eval("x"))
+    l = s.eval("[1, x, [2]]")
+    assert len(l) == 3 and l[1].text == "x" and [v.text for v in l] == ["1", "x", "[2]"]
+    assert (2 ** s.eval("x")).text == "2^x"
+
+
+def test_compile_a_list_of_closed_forms(s):
+    f = s.compile("[sin(w*t), [t^2, exp(-t)]]", ["t"], {"w": 2})
+    t = np.array([0.0, 0.5, 1.0])
+    np.testing.assert_allclose(f(t=t), np.stack([np.sin(2 * t), t**2, np.exp(-t)], axis=1), rtol=1e-15)
+    with pytest.raises(symrep.Error, match="expression or a list"):
+        s.compile("multicomplex(1)", ["t"])
+
+
 def test_vector_solutions_are_values(s):
     s.eval("vector w, r0, v0; positive w0")
     P = s.eval("P := ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)")

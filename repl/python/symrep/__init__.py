@@ -149,7 +149,37 @@ def _compile(self, expression, inputs, values=None, stable=False):
     return self._compile(expression, list(inputs), values, stable)
 
 
+def _bool(self):
+    # only a boolean has a truth value: `if s.eval("check(P, r)"):` must not be true for false
+    b = self._bool()
+    if b is None:
+        raise TypeError("the truth value of a symrep %s is not defined (only booleans have one): %s"
+                        % (self.kind, self.text))
+    return b
+
+
+def _float(self):
+    """float(v) for a real number, exact or not (evalf at the session's Digits)."""
+    x = self if self._number() is not None else self.call("evalf")
+    n = x._number()
+    if n is None or n[0] in ("gaussian", "complex"):
+        raise TypeError("not a real number: %s" % self.text)
+    return float(_Fraction(int(n[1]), int(n[2]))) if n[0] == "rational" else n[1]
+
+
+def _items_or_raise(self):
+    items = self._items()
+    if items is None:
+        raise TypeError("a symrep %s is not a list" % self.kind)
+    return items
+
+
 Value.to_python = _to_python
+Value.__bool__ = _bool
+Value.__float__ = _float
+Value.__len__ = lambda self: len(_items_or_raise(self))
+Value.__getitem__ = lambda self, k: _items_or_raise(self)[k]
+Value.__iter__ = lambda self: iter(_items_or_raise(self))
 Value.to_sympy = _to_sympy
 Value.__getattr__ = _getattr
 Session._compile = Session.compile
