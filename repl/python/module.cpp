@@ -87,7 +87,9 @@ private:
     struct sigaction old_ {};
 };
 
-py_value eval(const state_ptr& st, const std::string& code) {
+// `located`: the code is the user's (errors carry its line and column); off for the statements
+// this module writes itself (operators, calls), whose places mean nothing to the user.
+py_value eval(const state_ptr& st, const std::string& code, bool located = true) {
     lang::value v;
     std::string message, file, source;
     int line = 0, column = 0;
@@ -106,7 +108,10 @@ py_value eval(const state_ptr& st, const std::string& code) {
             message = e.what();
         }
     }
-    if (!message.empty()) raise_error(message, file, line, column, source);
+    if (!message.empty()) {
+        if (!located) line = 0;
+        raise_error(message, file, line, column, source);
+    }
     return {std::move(v), st};
 }
 
@@ -164,14 +169,15 @@ py_value call(const state_ptr& st, const std::string& name, const std::vector<la
     temporaries tmp(st);
     std::string code = name + "(";
     for (std::size_t i = 0; i < args.size(); ++i) code += (i ? ", " : "") + tmp(args[i]);
-    return eval(st, code + ")");
+    return eval(st, code + ")", false);
 }
 
 py_value binary(const py_value& a, const py::object& b, const std::string& op, bool reflected) {
     const lang::value other = from_python(a.state, b);
     temporaries tmp(a.state);
     const std::string x = tmp(a.v), y = tmp(other);
-    return eval(a.state, reflected ? "(" + y + ") " + op + " (" + x + ")" : "(" + x + ") " + op + " (" + y + ")");
+    return eval(a.state, reflected ? "(" + y + ") " + op + " (" + x + ")" : "(" + x + ") " + op + " (" + y + ")",
+                false);
 }
 
 // --- the compiled fast path ---------------------------------------------------
@@ -248,7 +254,7 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
     } catch (const std::exception& ex) {
         message = ex.what();
     }
-    if (!message.empty()) raise_error("compile: " + message, "", 0, 0, "");
+    if (!message.empty()) raise_error(message.rfind("compile: ", 0) == 0 ? message : "compile: " + message, "", 0, 0, "");
     return c;
 }
 
@@ -479,7 +485,7 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__neg__",
              [](const py_value& a) {
                  temporaries tmp(a.state);
-                 return eval(a.state, "-(" + tmp(a.v) + ")");
+                 return eval(a.state, "-(" + tmp(a.v) + ")", false);
              })
         .def("cross", [](const py_value& a, const py::object& b) { return binary(a, b, "x", false); },
              "The cross product a x b (vectors).")
@@ -497,7 +503,7 @@ PYBIND11_MODULE(_symrep, m) {
             }
             temporaries tmp(a.state);
             const std::string x = tmp(a.v), y = tmp(other);
-            const py_value r = eval(a.state, "(" + x + ") == (" + y + ")");
+            const py_value r = eval(a.state, "(" + x + ") == (" + y + ")", false);
             return py::bool_(r.v.is_bool() && r.v.as_bool());
         })
         .def("__hash__", [](const py_value& v) { return py::hash(py::str(lang::print_value(v.v, true))); })

@@ -49,6 +49,10 @@ def test_errors_carry_line_and_column(s):
     assert err.caret().splitlines()[-1].strip() == "^"
     with pytest.raises(symrep.Error, match="zero divisor"):
         s.eval("inverse(element(multicomplex(1), [1, 0, 0, 1]))")
+    # errors of operations and calls carry no place (the statement is the module's, not the user's)
+    with pytest.raises(symrep.Error) as e:
+        s.eval("x") + [1, [2]]
+    assert e.value.line is None and str(e.value) == "cannot add an expression and a list (operator '+')"
     # the session goes on after an error
     assert s.eval("a + 1").to_python() == 2
 
