@@ -92,14 +92,14 @@ void BM_Mechanics_DeriveForcedCoriolis(benchmark::State& state) {
 }
 BENCHMARK(BM_Mechanics_DeriveForcedCoriolis)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
 
-// Issue 15.2: the exact check of the same problems (the solution derived once, outside the loop);
-// the counter `x_solve` is the check's time over the derivation's, both measured here.
-void BM_Mechanics_CheckForced(benchmark::State& state) {
+// Issue 15.2: the exact check check(P, solve(P)), the solution derived once outside the loop; the
+// counter `x_solve` is the check's time over the derivation's, both measured here.
+void check_over_solve(benchmark::State& state, const std::string& declarations, const std::string& problem,
+                      const std::string& label) {
     std::ostringstream out, err;
     lang::session s(out, err);
-    s.evaluate("vector w, g, r0, v0; positive w0");
-    s.evaluate(std::string("P := ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = ") + forcings[state.range(0)] +
-               ", r(0) = r0, r'(0) = v0)");
+    s.evaluate(declarations);
+    s.evaluate("P := " + problem);
     const auto t0 = std::chrono::steady_clock::now();
     s.evaluate("sol := solve(P)");
     const double solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -113,31 +113,22 @@ void BM_Mechanics_CheckForced(benchmark::State& state) {
         if (!v.as_bool()) state.SkipWithError("check(P, sol) is not true");
     }
     state.counters["x_solve"] = check_s / double(n) / solve_s;
-    state.SetLabel(forcings[state.range(0)]);
+    state.SetLabel(label);
+}
+
+// ... on the forced problems above
+void BM_Mechanics_CheckForced(benchmark::State& state) {
+    check_over_solve(state, "vector w, g, r0, v0; positive w0",
+                     std::string("ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = ") + forcings[state.range(0)] +
+                         ", r(0) = r0, r'(0) = v0)",
+                     forcings[state.range(0)]);
 }
 BENCHMARK(BM_Mechanics_CheckForced)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
 
-// Issue 15.2 on the thesis's problems of BM_Mechanics_Derive: check(P, solve(P)) over solve(P).
+// ... on the thesis's problems of BM_Mechanics_Derive
 void BM_Mechanics_Check(benchmark::State& state) {
     const application& a = apps[state.range(0)];
-    std::ostringstream out, err;
-    lang::session s(out, err);
-    s.evaluate(a.declarations);
-    s.evaluate(std::string("P := ") + a.problem);
-    const auto t0 = std::chrono::steady_clock::now();
-    s.evaluate("sol := solve(P)");
-    const double solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    double check_s = 0;
-    long n = 0;
-    for (auto _ : state) {
-        const auto c0 = std::chrono::steady_clock::now();
-        const lang::value v = s.evaluate("check(P, sol)");
-        check_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
-        ++n;
-        if (!v.as_bool()) state.SkipWithError("check(P, sol) is not true");
-    }
-    state.counters["x_solve"] = check_s / double(n) / solve_s;
-    state.SetLabel(app_names[state.range(0)]);
+    check_over_solve(state, a.declarations, a.problem, app_names[state.range(0)]);
 }
 BENCHMARK(BM_Mechanics_Check)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 

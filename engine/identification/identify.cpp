@@ -166,13 +166,32 @@ std::vector<double> fit_polynomial(const std::vector<double>& x, const std::vect
     return out;
 }
 
-identification_report identify_values(const measured_system& s, const linear_part& a, unsigned degree) {
+namespace {
+
+// The two readings of the thesis's procedure: the report with the known a_k, and its end -- f
+// fitted to the values at the points, the residual of the integrated equation, the warnings.
+identification_report values_report(const measured_system& s, const linear_part& a) {
     check_system(s, a);
-    const std::vector<double> av = known(a);
-    const long m = long(a.size());
     identification_report rep;
     rep.points = s.q.size();
-    rep.a = av;
+    rep.a = known(a);
+    return rep;
+}
+
+identification_report fitted(identification_report rep, const measured_system& s, unsigned degree) {
+    rep.points = rep.points_q.size();
+    rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
+    rep.residual = integrated_residual(s, rep.a, rep.f);
+    rep.warning = warnings(s, rep.condition_number);
+    return rep;
+}
+
+}  // namespace
+
+identification_report identify_values(const measured_system& s, const linear_part& a, unsigned degree) {
+    identification_report rep = values_report(s, a);
+    const std::vector<double>& av = rep.a;
+    const long m = long(a.size());
     // (IV.2.45) f(q_e) = u_e - sum_(j=0..m) a_j (Q^T)^(j-m) q_e, a_0 = 1. (Q^T)^(-m) is the Toeplitz
     // matrix of (2N/T)^m ((1 - x)/(1 + x))^m: an m-fold pole at x = -1. The first blocks' mismatch
     // between (Q^T)^m and the m-fold integral of a function that is not piecewise constant (for
@@ -211,20 +230,13 @@ identification_report identify_values(const measured_system& s, const linear_par
         rep.values_f.push_back(f);
         rep.points_q.push_back(apply(average, s.q, k));
     }
-    rep.points = rep.points_q.size();
-    rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
-    rep.residual = integrated_residual(s, av, rep.f);
-    rep.warning = warnings(s, rep.condition_number);
-    return rep;
+    return fitted(std::move(rep), s, degree);
 }
 
 identification_report identify_values_as_printed(const measured_system& s, const linear_part& a, unsigned degree) {
-    check_system(s, a);
-    const std::vector<double> av = known(a);
+    identification_report rep = values_report(s, a);
+    const std::vector<double>& av = rep.a;
     const long m = long(a.size());
-    identification_report rep;
-    rep.points = s.q.size();
-    rep.a = av;
     rep.points_q = s.q;
     rep.values_f = s.u;
     for (long j = 0; j <= m; ++j) {  // (IV.2.45) as printed
@@ -233,10 +245,7 @@ identification_report identify_values_as_printed(const measured_system& s, const
         const std::vector<double> d = integrate_blocks(s.q, j - m, s.period);
         for (std::size_t k = 0; k < d.size(); ++k) rep.values_f[k] -= aj * d[k];
     }
-    rep.f = fit_polynomial(rep.points_q, rep.values_f, degree, &rep.condition_number);
-    rep.residual = integrated_residual(s, av, rep.f);
-    rep.warning = warnings(s, rep.condition_number);
-    return rep;
+    return fitted(std::move(rep), s, degree);
 }
 
 identification_report identify_integral(const measured_system& s, const linear_part& a, unsigned degree) {

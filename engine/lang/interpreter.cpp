@@ -77,10 +77,7 @@ std::string session::resolve_path(const std::string& path) const {
     return (fs::path(dir) / p).string();
 }
 
-namespace {
-
-/// The text of line `line` (1-based) of `text`, without its newline.
-std::string line_of(const std::string& text, int line) {
+std::string source_line(const std::string& text, int line) {
     std::size_t start = 0;
     for (int l = 1; l < line; ++l) {
         start = text.find('\n', start);
@@ -89,8 +86,11 @@ std::string line_of(const std::string& text, int line) {
     }
     std::size_t end = text.find('\n', start);
     if (end == std::string::npos) end = text.size();
+    if (end > start && text[end - 1] == '\r') --end;
     return text.substr(start, end - start);
 }
+
+namespace {
 
 bool utf8_continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
@@ -158,20 +158,25 @@ std::string trimmed(const std::string& s) {
 }  // namespace
 
 
+std::string caret_text(const std::string& line, int column) {
+    if (line.empty() || column < 1 || static_cast<std::size_t>(column) > line.size() + 1) return {};
+    std::string pad;  // one blank per character before the column (tabs kept)
+    for (std::size_t i = 0; i < offset_of(line, 1, column); ++i)
+        if (!utf8_continuation(line[i])) pad += line[i] == '\t' ? '\t' : ' ';
+    return "    " + escape_controls(line) + "\n    " + pad + "^\n";
+}
+
 void session::report(const source_location& where, const std::string& message) {
     ++failures_;
     const std::string msg = escape_controls(shorten_numbers(message));
     if (opts_.stop_on_error) stopped_ = true;
-    {
-        reported_error r{msg, where, {}};
-        if (auto it = sources_.find(where.file); it != sources_.end()) {
-            const int first = source_line_.count(where.file) ? source_line_[where.file] : 1;
-            if (where.line >= first) r.source_line = line_of(it->second, where.line - first + 1);
-            if (!r.source_line.empty() && r.source_line.back() == '\r') r.source_line.pop_back();
-        }
-        errors_.push_back(std::move(r));
-        if (on_error_) on_error_(errors_.back());
+    reported_error r{msg, where, {}};
+    if (auto it = sources_.find(where.file); it != sources_.end()) {
+        const int first = source_line_.count(where.file) ? source_line_[where.file] : 1;
+        if (where.line >= first) r.source_line = source_line(it->second, where.line - first + 1);
     }
+    errors_.push_back(r);
+    if (on_error_) on_error_(errors_.back());
     if (opts_.format == output_options::json) {
         *err_ << "{\"error\": " << json_quote(msg) << ", \"file\": " << json_quote(where.file)
               << ", \"line\": " << where.line << ", \"column\": " << where.column << "}\n";
@@ -179,20 +184,7 @@ void session::report(const source_location& where, const std::string& message) {
         return;
     }
     *err_ << where.file << ":" << where.line << ":" << where.column << ": error: " << msg << "\n";
-    if (opts_.caret) {
-        auto it = sources_.find(where.file);
-        const int first = source_line_.count(where.file) ? source_line_[where.file] : 1;
-        if (it != sources_.end() && where.line >= first) {
-            std::string l = line_of(it->second, where.line - first + 1);
-            if (!l.empty() && l.back() == '\r') l.pop_back();
-            if (!l.empty() && where.column >= 1 && static_cast<std::size_t>(where.column) <= l.size() + 1) {
-                std::string pad;  // one blank per character before the column (tabs kept)
-                for (std::size_t i = 0; i < offset_of(l, 1, where.column); ++i)
-                    if (!utf8_continuation(l[i])) pad += l[i] == '\t' ? '\t' : ' ';
-                *err_ << "    " << escape_controls(l) << "\n    " << pad << "^\n";
-            }
-        }
-    }
+    if (opts_.caret) *err_ << caret_text(r.source_line, where.column);
     err_->flush();
 }
 

@@ -234,6 +234,12 @@ private:
 /// The same flag as symrep::interrupt_flag() (core/error.h).
 std::atomic<bool>& interrupt_requested();
 
+/// Line `line` (1-based) of `text`, without its line end ("" past the end).
+std::string source_line(const std::string& text, int line);
+/// The caret lines of an error report (--caret): the source line and a caret under `column`,
+/// each indented by four blanks and ended by a newline; "" when the column is not in the line.
+std::string caret_text(const std::string& line, int column);
+
 /// Names of builtins close to `name` (small edit distance, or starting with it),
 /// best first, at most `limit`: the "did you mean" suggestions.
 std::vector<std::string> similar_builtin_names(const registry& r, const std::string& name, std::size_t limit = 5);

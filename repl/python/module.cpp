@@ -27,6 +27,7 @@
 #include "lang/interpreter.h"
 #include "lang/print_value.h"
 #include "lang/values.h"
+#include "syntax/lexer.h"
 #include "numeric/evaluator.h"
 #include "numeric/stable_evaluator.h"
 #include "vector/vector.h"
@@ -48,14 +49,6 @@ struct py_value {
     lang::value v;
     state_ptr state;
 };
-
-std::string line_of(const std::string& text, int line) {
-    std::istringstream in(text);
-    std::string l;
-    for (int i = 1; std::getline(in, l); ++i)
-        if (i == line) return l;
-    return {};
-}
 
 [[noreturn]] void raise_error(const std::string& message, const std::string& file, int line, int column,
                               const std::string& source_line) {
@@ -101,7 +94,7 @@ py_value eval(const state_ptr& st, const std::string& code, bool located = true)
             v = st->s.evaluate(code);
         } catch (const lang::script_error& e) {
             message = e.what(), file = "<python>", line = e.where.line, column = e.where.column;
-            source = line_of(code, line);
+            source = lang::source_line(code, line);
         } catch (const std::bad_alloc& e) {
             message = allocation_failure_message(e, "out of memory");
         } catch (const std::exception& e) {
@@ -325,6 +318,10 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, bool stabl
 PYBIND11_MODULE(_symrep, m) {
     m.doc() = "symrep: exact solutions of dynamical systems by the algebraic methods (the compiled part)";
     m.attr("version") = SYMREP_VERSION;
+    m.def("caret_text", &lang::caret_text, py::arg("line"), py::arg("column"),
+          "The source line and a caret under the column, as symrep --caret prints them.");
+    m.def("needs_more_input", &lang::needs_more_input, py::arg("text"),
+          "True while the text has an open bracket or string: the statement goes on (syntax/lexer.h).");
 
     py::class_<session_state, state_ptr>(m, "Session", "A symrep language session (variables, symbols, results).")
         .def(py::init([] { return std::make_shared<session_state>(); }))
@@ -499,12 +496,13 @@ PYBIND11_MODULE(_symrep, m) {
             try {
                 other = from_python(a.state, b);
             } catch (const symrep::type_error&) {
-                return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+                return py::bool_(false);  // a dict, an object: no value of the language equals it
             }
             temporaries tmp(a.state);
             const std::string x = tmp(a.v), y = tmp(other);
             const py_value r = eval(a.state, "(" + x + ") == (" + y + ")", false);
-            return py::bool_(r.v.is_bool() && r.v.as_bool());
+            if (!r.v.is_bool()) throw symrep::type_error("== gave " + r.v.a_kind() + ", not a boolean");
+            return py::bool_(r.v.as_bool());
         })
         .def("__hash__", [](const py_value& v) { return py::hash(py::str(lang::print_value(v.v, true))); })
         .def(

@@ -104,6 +104,8 @@ def test_kernel_protocol(kernel):
     assert "inverse" in c["matches"] and c["cursor_start"] == 5
     i = reply_to(kc, kc.inspect("inverse(w)", 3))["content"]
     assert i["found"] and i["data"]["text/plain"].startswith("inverse(")
+    assert reply_to(kc, kc.is_complete("f(1,\n"))["content"]["status"] == "incomplete"
+    assert reply_to(kc, kc.is_complete("f(1, 2)"))["content"]["status"] == "complete"
     reply, out = run(kc, "?inverse")
     assert any(m["msg_type"] == "stream" and "inverse(" in m["content"]["text"] for m in out)
     reply, out = run(kc, "?inversee")

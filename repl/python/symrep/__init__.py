@@ -18,7 +18,7 @@ values, with .text, .latex, .kind, Python operators and every builtin as a metho
 import re
 from fractions import Fraction as _Fraction
 
-from ._symrep import Compiled, Session, Value, version  # noqa: F401
+from ._symrep import Compiled, Session, Value, caret_text, needs_more_input, version  # noqa: F401
 
 __all__ = ["Session", "Value", "Compiled", "Error", "version"]
 __version__ = version
@@ -45,8 +45,7 @@ class Error(Exception):
         """The message, the source line and a caret under the column (as symrep --caret)."""
         text = str(self)
         if self.line is not None and self.source_line:
-            pad = "".join("\t" if ch == "\t" else " " for ch in self.source_line[: max(self.column - 1, 0)])
-            text += "\n    " + self.source_line + "\n    " + pad + "^"
+            text += "\n" + caret_text(self.source_line, self.column).rstrip("\n")
         return text
 
 

@@ -128,19 +128,10 @@ class SymrepKernel(Kernel):
         return {"status": "ok", "found": True, "data": {"text/plain": text}, "metadata": {}}
 
     def do_is_complete(self, code):
-        # a statement goes on while a bracket is open (syntax/lexer.h)
-        depth = 0
-        in_string = False
-        for ch in code:
-            if in_string:
-                in_string = ch != '"'
-            elif ch == '"':
-                in_string = True
-            elif ch in "([{":
-                depth += 1
-            elif ch in ")]}":
-                depth -= 1
-        return {"status": "incomplete", "indent": ""} if depth > 0 or in_string else {"status": "complete"}
+        # a statement goes on while a bracket or a string is open (syntax/lexer.h)
+        if symrep.needs_more_input(code):
+            return {"status": "incomplete", "indent": ""}
+        return {"status": "complete"}
 
 
 def kernel_spec(python=None):
