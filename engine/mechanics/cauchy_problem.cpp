@@ -194,66 +194,6 @@ quasi_polynomial forcing_coefficient(const ex& c, const ex& t, const ex& v) {
     }
 }
 
-// c in Q(...)[q]/(q^2 - A) for its one square root q = sqrt(A) of an expression:
-// (M1 + M2 q)/D with M1, M2, D free of q (denominators rationalized by the
-// conjugate), each part normalized. The solution of the reduced Foucault problem
-// (VI.2.94) then has w0^2 where 1/(sqrt(w0^2 + |w|^2) - |w|) stood, and its
-// coefficients collapse to the thesis's. Normalized (one fraction) without a root; unchanged
-// with several.
-ex in_square_root_field(const ex& c) {
-    const square_roots_as_symbols r = with_square_roots_as_symbols(c);
-    if (r.roots.empty()) {
-        if (const auto s = sum_of_fractions(c)) return *s;
-        return one_fraction(c);
-    }
-    if (r.roots.size() != 1 || r.roots[0].first.has(GiNaC::I)) return c;  // several: left as it is
-    const ex& root = r.roots[0].first;
-    const ex& q = r.roots[0].second;
-    const ex nd = GiNaC::normal(r.e).numer_denom();
-    auto reduce = [&](const ex& p) {  // p mod q^2 - A, as (p0, p1): p0 + p1 q
-        const ex m = GiNaC::expand(GiNaC::rem(GiNaC::expand(p), GiNaC::pow(q, 2) - root, q, false));
-        return std::make_pair(m.coeff(q, 0), m.coeff(q, 1));
-    };
-    const auto [n0, n1] = reduce(nd.op(0));
-    const auto [d0, d1] = reduce(nd.op(1));
-    // (n0 + n1 q)/(d0 + d1 q) = (n0 + n1 q)(d0 - d1 q)/(d0^2 - d1^2 A)
-    const ex den = GiNaC::normal(d0 * d0 - d1 * d1 * root);
-    if (den.is_zero()) return c;
-    const ex m0 = GiNaC::normal((n0 * d0 - n1 * d1 * root) / den), m1 = GiNaC::normal((n1 * d0 - n0 * d1) / den);
-    return m0 + m1 * GiNaC::sqrt(root);
-}
-
-// Each coefficient of the functions of t in c (sin, cos, exp of t, powers of t)
-// brought into the field of its square root (in_square_root_field), then summed.
-ex simplified_square_roots(const ex& c, const ex& t) {
-    std::map<ex, ex, GiNaC::ex_is_less> by_t;  // t-part -> its coefficient
-    // a term whose factors in t are single functions (t^k, exp, sin, cos) is split as it is;
-    // only one with a sum in t is expanded (its coefficient fractions stay whole)
-    std::function<void(const ex&, bool)> take = [&](const ex& term, bool expanded) {
-        ex tp = 1, rest = 1;
-        for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
-            const ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
-            if (!f.has(t)) {
-                rest *= f;
-            } else if (!expanded && (GiNaC::is_a<GiNaC::add>(f) || (GiNaC::is_a<GiNaC::power>(f) &&
-                                                                   GiNaC::is_a<GiNaC::add>(f.op(0))))) {
-                const ex e = GiNaC::expand(term);
-                for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i)
-                    take(GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e, true);
-                return;
-            } else {
-                tp *= f;
-            }
-        }
-        by_t[tp] += rest;
-    };
-    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(c) ? c.nops() : 1); ++i)
-        take(GiNaC::is_a<GiNaC::add>(c) ? c.op(i) : c, false);
-    ex out = 0;
-    for (const auto& [tp, k] : by_t) out += in_square_root_field(k) * tp;
-    return out;
-}
-
 // sin(u), cos(u) with the sign of u chosen by the printed text of u (no leading
 // '-'): sin(-(w0 - |w|) t) -> -sin((w0 - |w|) t). GiNaC's own choice of the sign
 // of w0 - |w| follows its term order, which varies from run to run.

@@ -1,6 +1,7 @@
 // symrep/output/printer.cpp -- canonical printing (see printer.h for the rules).
 #include "output/printer.h"
 
+#include "scalar/scalar.h"
 #include "vector/vector.h"
 
 #include <algorithm>
@@ -154,6 +155,48 @@ ex sign_normalized(const ex& f, int& sign) {
     return f;
 }
 
+// A factor as base^exponent (exponent 1 for a factor that is not a power).
+std::pair<ex, numeric> base_exponent(const ex& f) {
+    if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_rational())
+        return {f.op(0), ex_to<numeric>(f.op(1))};
+    return {f, 1};
+}
+
+// sqrt(B) / (-B) and -1/sqrt(B) are the same product; GiNaC holds either, depending on the
+// order in which it built the terms (which its hash order, and so the addresses of its type
+// names, decide): a radical B^p (p not an integer, B a sum) and a factor (+-B)^n with an
+// integer n are merged into B^(p + n). Returns true when the merge moved a sign (-1)^n
+// into the coefficient.
+bool merge_radical_bases(std::vector<ex>& factors) {
+    bool flipped = false;
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+        auto [B, p] = base_exponent(factors[i]);
+        if (!is_a<GiNaC::add>(B) || p.is_integer()) continue;
+        bool merged = false;
+        for (std::size_t j = 0; j < factors.size(); ++j) {
+            if (j == i) continue;
+            const auto [C, n] = base_exponent(factors[j]);
+            if (!is_a<GiNaC::add>(C) || !n.is_integer() || C.nops() != B.nops()) continue;
+            if (GiNaC::expand(C + B).is_zero()) {
+                if (n.is_odd()) flipped = !flipped;
+            } else if (!GiNaC::expand(C - B).is_zero()) {
+                continue;
+            }
+            p += n;
+            factors.erase(factors.begin() + std::ptrdiff_t(j));
+            if (j < i) --i;
+            --j;
+            merged = true;
+        }
+        if (merged)
+            factors[i] = p.is_zero() ? ex(1)
+                                     : GiNaC::dynallocate<GiNaC::power>(B, p).setflag(GiNaC::status_flags::evaluated);
+    }
+    factors.erase(std::remove_if(factors.begin(), factors.end(), [](const ex& f) { return f.is_equal(1); }),
+                  factors.end());
+    return flipped;
+}
+
 // Splits a term into its numeric coefficient and its other factors.
 void split_term(const ex& t, numeric& c, std::vector<ex>& rest) {
     c = 1;
@@ -176,6 +219,7 @@ void split_term(const ex& t, numeric& c, std::vector<ex>& rest) {
                 if (sign < 0) c = -c;
             }
         }
+        if (merge_radical_bases(rest)) c = -c;
         return;
     }
     rest.push_back(t);
@@ -412,6 +456,11 @@ bool involves_vectors(const ex& e) {
         if (involves_vectors(e.op(i))) return true;
     return false;
 }
+
+namespace {
+// Messages of the lower floors (scalar/scalar.h, message_text) print canonically too.
+const bool message_printer_registered = (set_message_printer(&print_ex), true);
+}  // namespace
 
 std::string print_ex(const ex& e) {
     if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e))) return symrep::to_string(e);

@@ -144,6 +144,17 @@ std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x);
 /// of the solver's closed forms do.
 bool proved_zero_by_denominators(const GiNaC::ex& x);
 
+/// c in Q(...)[q]/(q^2 - A) for its one square root q = sqrt(A) (any expression A):
+/// (M1 + M2 q)/D, denominators rationalized by the conjugate, each part normalized; without a
+/// root one fraction; with several, c unchanged (square_root_field.cpp). With rational_bases,
+/// square roots of rationals count as roots too (as with_square_roots_as_symbols).
+GiNaC::ex in_square_root_field(const GiNaC::ex& c, bool rational_bases = false);
+/// Each coefficient of the functions of t in c (t^k, exp, sin, cos of t) brought into the
+/// field of its square root (in_square_root_field), then summed: a canonical form of a
+/// quasi-polynomial whose coefficients hold one square root, whatever form the solver's
+/// pivots left them in.
+GiNaC::ex simplified_square_roots(const GiNaC::ex& c, const GiNaC::ex& t, bool rational_bases = false);
+
 /// Half-integer powers of positive rationals in each product made one
 /// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221).
 GiNaC::ex canonical_radicals(const GiNaC::ex& e);
@@ -157,7 +168,15 @@ inline double tidy(double x) { return x; }
 
 /// An expression as text for an error message, cut to about `max` characters
 /// (a message that quotes a 10 000-character minimal polynomial helps nobody).
+/// Printed by the message printer below.
 std::string message_text(const GiNaC::ex& e, std::size_t max = 160);
+
+/// The printer of message_text. GiNaC's own output orders terms by hash values that depend
+/// on the addresses of its type names (so on address randomization) and on the order in
+/// which symbols were made: until a higher floor registers a canonical printer (the output
+/// floor registers output::print_ex), messages print GiNaC's way.
+using expression_printer = std::string (*)(const GiNaC::ex&);
+void set_message_printer(expression_printer p);
 
 /// log |a + i b|: exact as log(a^2 + b^2)/2, so that the logarithms of one
 /// number combine (log(26)/2, never log(sqrt(26))); double through hypot, which

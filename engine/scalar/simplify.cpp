@@ -460,10 +460,24 @@ std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x) {
     return sum;
 }
 
+namespace {
+expression_printer g_message_printer = nullptr;
+}
+
+void set_message_printer(expression_printer p) { g_message_printer = p; }
+
 std::string message_text(const GiNaC::ex& e, std::size_t max) {
-    std::ostringstream os;
-    os << e;
-    std::string s = os.str();
+    std::string s;
+    try {
+        if (g_message_printer) s = g_message_printer(e);
+    } catch (const std::exception&) {
+        s.clear();  // an expression the canonical printer refuses: GiNaC's text below
+    }
+    if (s.empty()) {
+        std::ostringstream os;
+        os << e;
+        s = os.str();
+    }
     if (s.size() > max)
         s = s.substr(0, max / 2) + " ... " + s.substr(s.size() - max / 4) + " (" +
             std::to_string(s.size()) + " characters)";

@@ -215,6 +215,19 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
                      " and q does not cancel it, so no response is in the input's class (case e of IV.3.2); "
                      "the response has secular terms and lives on the polynomial algebra of p r (Thm IV.3.2.1)";
     }
+    // one form whatever the pivots of the linear solves were (they follow GiNaC's term order,
+    // which depends on the session's history and on addresses): coefficients in the field of
+    // their square root
+    // (numeric coefficients: radicals of rationals; with parameters the forms stay as derived)
+    const auto canonical_form = [&](const ex& x) {
+        for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t)) return x;
+        return GiNaC::expand(simplified_square_roots(x, t, true));
+    };
+    if (!discrete) {
+        out.particular = canonical_form(out.particular);
+        if (out.has_zero_state) out.zero_state = canonical_form(out.zero_state);
+    }
     // every response substituted into the system (IV.3.7)
     const ex lhs_minus_rhs = [&](const ex& x) {
         return tidy(GiNaC::expand(apply(P, x) - apply(Q, f)));
