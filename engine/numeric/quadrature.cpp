@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,10 +60,11 @@ struct quadrature_system {
     std::size_t unknown(const ex& I, const ex& s) {
         const ex sigma = I.op(0), c = I.op(1);
         if (!GiNaC::is_a<GiNaC::symbol>(sigma) || sigma.is_equal(s) || !I.op(2).is_equal(s) || has_symbol(c))
-            throw domain_error("integral: the nested integral " + message_text(I) + " is not of the form int_c^" +
-                               message_text(s) + " g(s) ds with g in its own variable s and a number c");
+            throw domain_error("integral: the nested integral in " + message_text(sigma) + " from " + message_text(c) +
+                               " to " + message_text(I.op(2)) + " is not of the form int_c^" + message_text(s) +
+                               " g(sigma) dsigma with g in its own variable sigma and a number c");
         const ex gs = reduce(I.op(3), sigma);
-        check_symbols(gs, sigma, I.op(3));
+        check_symbols(gs, sigma);
         const ex gx = gs.subs(sigma == x, GiNaC::subs_options::no_pattern);
         for (std::size_t j = 0; j < g.size(); ++j)
             if (lower[j].is_equal(c) && g[j].is_equal(gx)) return j;
@@ -79,12 +81,12 @@ struct quadrature_system {
     }
 
     // only s and the unknowns may be left
-    void check_symbols(const ex& e, const ex& s, const ex& as_written) const {
+    void check_symbols(const ex& e, const ex& s) const {
         for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
             if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(s) &&
                 std::none_of(y.begin(), y.end(), [&](const GiNaC::symbol& u) { return it->is_equal(u); }))
-                throw domain_error("integral: the integrand " + message_text(as_written) +
-                                   " has symbols without values (" + message_text(*it) + ")");
+                throw domain_error("integral: the integrand in " + message_text(s) + " has symbols without values (" +
+                                   message_text(*it) + ")");
     }
 };
 
@@ -96,7 +98,7 @@ integral_value evaluate_integral(const ex& variable, double a, double b, const e
     if (a == b) return out;
     quadrature_system q;
     const ex top = q.reduce(integrand, variable);
-    q.check_symbols(top, variable, integrand);
+    q.check_symbols(top, variable);
     q.add(top.subs(variable == q.x, GiNaC::subs_options::no_pattern), a, variable, integrand);
     const std::size_t n = q.g.size();
     // y_j(a): 0 when the inner integral starts at a, else int_c^a of it (the same method)
@@ -129,32 +131,38 @@ integral_value evaluate_integral(const ex& variable, double a, double b, const e
 
 namespace {
 
-double judged(const ex& variable, double a, double b, const ex& integrand) {
-    const integral_value v = evaluate_integral(variable, a, b, integrand);
-    if (v.error <= 1e-10 * v.scale) return v.value;
+constexpr double converged = 1e-10;  // of the scale: the estimate that is accepted
+
+std::string not_converged(const ex& variable, double a, double b, const integral_value& v, const std::string& more = "") {
     std::ostringstream os;
     os.precision(3);
-    os << "integral: the quadrature of " << message_text(integrand, 80) << " over [" << a << ", " << b
+    os << "integral: the quadrature in " << message_text(variable) << " over [" << a << ", " << b
        << "] did not converge (error estimate " << v.error << " for the value " << v.value << ", int |f| = "
-       << v.scale << ")";
-    throw domain_error(os.str());
+       << v.scale << more << ")";
+    return os.str();
 }
 
-}  // namespace
-
-double integrate_numerically(const ex& variable, double a, double b, const ex& integrand) {
-    return judged(variable, a, b, integrand);
+double judged(const ex& variable, double a, double b, const ex& integrand) {
+    const integral_value v = evaluate_integral(variable, a, b, integrand);
+    if (v.error <= converged * v.scale) return v.value;
+    throw domain_error(not_converged(variable, a, b, v));
 }
 
-double integrate_nested(const ex& variable, double a, double b, const ex& integrand) {
-    return judged(variable, a, b, integrand);
-}
+// An integral object evaluated but not converged by its own scale: judged with the whole expression.
+struct open_integral {
+    GiNaC::symbol z;
+    integral_value v;
+    ex variable;
+    double a = 0, b = 0;
+};
 
-ex integrals_as_numbers(const ex& e) {
+// e with its integral objects (numeric limits, no symbol but their variables) replaced by their
+// values, those whose estimate is above 1e-10 of their own scale by symbols (open)
+ex values_of_integrals(const ex& e, std::vector<open_integral>& open) {
     if (!has_integral(e)) return e;
     if (GiNaC::is_a<GiNaC::integral>(e)) {
         const ex x = e.op(0);
-        const ex f = integrals_as_numbers(e.op(3));
+        const ex f = integrals_as_numbers(e.op(3));  // constant integrals inside, judged alone
         const ex a = e.op(1), b = e.op(2);
         if (!GiNaC::is_a<GiNaC::symbol>(x)) return e;
         // the limits as doubles (exact expressions such as 7/3 or pi)
@@ -165,12 +173,59 @@ ex integrals_as_numbers(const ex& e) {
         };
         double A, B;
         if (!limit(a, A) || !limit(b, B)) return e;
-        if (has_integral(f)) return GiNaC::numeric(integrate_nested(x, A, B, f));
-        for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
-            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(x)) return e;
-        return GiNaC::numeric(integrate_numerically(x, A, B, f));
+        if (!has_integral(f))
+            for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
+                if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(x)) return e;
+        const integral_value v = evaluate_integral(x, A, B, f);
+        if (v.error <= converged * v.scale) return GiNaC::numeric(v.value);
+        open.push_back({GiNaC::symbol("z"), v, x, A, B});
+        return open.back().z;
     }
-    return e.map([](const ex& c) { return integrals_as_numbers(c); });
+    struct recurse : GiNaC::map_function {
+        std::vector<open_integral>& open;
+        explicit recurse(std::vector<open_integral>& o) : open(o) {}
+        ex operator()(const ex& c) override { return values_of_integrals(c, open); }
+    } inner(open);
+    return e.map(inner);
+}
+
+}  // namespace
+
+ex integrals_as_numbers(const ex& e) {
+    std::vector<open_integral> open;
+    const ex x = values_of_integrals(e, open);
+    if (open.empty()) return x;
+    GiNaC::exmap at;
+    for (const auto& o : open) at[o.z] = GiNaC::numeric(o.v.value);
+    const ex out = x.subs(at, GiNaC::subs_options::no_pattern);
+    // an integral that is small in the whole (t = 0.006 in r = r0 + ...): its estimate judged
+    // against the expression's value, sum_k |d e/d I_k| error_k <= 1e-10 |e|
+    double whole = std::numeric_limits<double>::quiet_NaN();
+    if (!has_symbol(out)) {
+        try {
+            whole = accurate_double(out);
+            double spread = 0;
+            for (const auto& o : open)
+                spread += std::fabs(accurate_double(x.diff(o.z).subs(at, GiNaC::subs_options::no_pattern))) * o.v.error;
+            if (spread <= converged * std::fabs(whole)) return out;
+        } catch (const error&) {
+        }
+    }
+    const auto worst = std::max_element(open.begin(), open.end(), [](const auto& p, const auto& q) {
+        return p.v.error / std::max(p.v.scale, 1e-300) < q.v.error / std::max(q.v.scale, 1e-300);
+    });
+    std::ostringstream more;
+    more.precision(3);
+    if (std::isfinite(whole)) more << ", the whole value " << whole;
+    throw domain_error(not_converged(worst->variable, worst->a, worst->b, worst->v, more.str()));
+}
+
+double integrate_numerically(const ex& variable, double a, double b, const ex& integrand) {
+    return judged(variable, a, b, integrand);
+}
+
+double integrate_nested(const ex& variable, double a, double b, const ex& integrand) {
+    return judged(variable, a, b, integrand);
 }
 
 }  // namespace symrep::num

@@ -187,6 +187,7 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
     std::size_t attempts = 0;
     double p = a, h = L;
     bool halved = false;  // this attempt halves a rejected panel at the same p
+    double first = h;     // the width the halvings at p started from
     while (p != b) {
         if (++attempts > chain_max_panels) {
             std::ostringstream os;
@@ -199,7 +200,7 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         M.run(F, p, h, r.value, fine);
         M.run(C, p, h, r.value, local);
         const double share = std::fabs(h) / length;
-        bool accept = true;
+        bool accept = true, forced = false;
         double worst = 0;  // max_j e_j / tol_j
         for (std::size_t j = 0; j < n; ++j) {
             double d = std::fabs(local.end[j] - fine.end[j]);
@@ -210,20 +211,23 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
                 if (d > 0) worst = std::max(worst, d / tol);
                 continue;
             }
-            // rounding noise: the halving did not shrink the difference, which is already
-            // far below the panel's own size
-            const bool stalled = halved && d > parent[j] / 16 && d <= 1e-10 * fine.l1[j];
+            // rounding noise of the integrand (a cancellation such as 3/4 - 3 cos(tau)/4 near 0):
+            // the halving did not shrink the difference, which is far below the panel's own size
+            // (an integrand of 31 points resolved to 1e-3 shrinks it by 1e9 at a halving)
+            const bool stalled = halved && d > parent[j] / 8 && d <= 1e-3 * fine.l1[j];
             if (!stalled) accept = false;
-            worst = std::numeric_limits<double>::infinity();
+            forced = true;
         }
         const bool smallest = std::fabs(h) <= length * std::ldexp(1.0, -45) ||
                               std::fabs(h) <= 64 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(p), std::fabs(p + h));
         if (!accept && !smallest) {
+            if (!halved) first = h;
             parent = e;
             halved = true;
             h /= 2;
             continue;
         }
+        forced = forced || !accept;
         // accepted: the lower rule's trajectory from its own values, the estimate its difference
         // (one quadrature alone: the same increments as the local run)
         if (n > 1) M.run(C, p, h, yc, coarse);
@@ -237,8 +241,10 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         ++r.panels;
         p = (h == b - p) ? b : p + h;
         halved = false;
-        // the next panel: the lower rule's difference grows about like h^31
-        if (worst < 1e-9) h *= 2;
+        // the next panel: the lower rule's difference grows about like h^31; after a panel
+        // accepted at the noise (or the smallest width), the width the halvings started from
+        if (forced) h = std::max(std::fabs(h), std::fabs(first)) * (h < 0 ? -1 : 1);
+        else if (worst < 1e-9) h *= 2;
         else if (worst < 1e-3) h *= 1.5;
     }
     r.evaluations = M.evaluations;
