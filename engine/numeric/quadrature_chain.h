@@ -51,8 +51,9 @@ struct chain_result {
 /// g(j, x, y) = g_j(x, y_0, ..., y_{j-1}): y holds n values, of which only the first j are set.
 using chain_integrand = std::function<double(std::size_t j, double x, const double* y)>;
 
-/// The most panels (accepted or not) one march may take: about 4e7 evaluations per component.
-constexpr std::size_t chain_max_panels = std::size_t(1) << 18;
+/// The most panels (accepted or not) one march may take: about 1.2e7 evaluations per component
+/// (a phase of about 1e6 rad; a few seconds before a refusal).
+constexpr std::size_t chain_max_panels = std::size_t(1) << 17;
 
 /// y(b) from y(a) = start (n values), a < b or a > b. variable names x in messages.
 /// symrep::domain_error when a g_j is not finite at a node (the point is said) or when the
