@@ -108,9 +108,10 @@ const chebyshev_rule& coarse_rule() {
 }
 
 // One rule on the panel [p, p + h] from the start values s: the values of every y_j at the
-// nodes (Y, row j), at p + h (end) and the panel's int |g_j| (l1).
+// nodes (Y, row j), at p + h (end), their increments from s (dY, dend: compared without the
+// rounding of s + increment) and the panel's int |g_j| (l1).
 struct panel_values {
-    std::vector<double> Y, end, l1;
+    std::vector<double> Y, dY, end, dend, l1;
 };
 
 class marcher {
@@ -123,7 +124,9 @@ public:
     void run(const chebyshev_rule& R, double p, double h, const std::vector<double>& s, panel_values& out) {
         const std::size_t m = R.n;
         out.Y.assign(n_ * m, 0.0);
+        out.dY.assign(n_ * m, 0.0);
         out.end.assign(n_, 0.0);
+        out.dend.assign(n_, 0.0);
         out.l1.assign(n_, 0.0);
         G_.resize(m);
         x_.resize(m);
@@ -146,14 +149,16 @@ public:
                 double acc = 0;
                 const double* row = &R.M[k * m];
                 for (std::size_t l = 0; l < m; ++l) acc += row[l] * G_[l];
-                Yj[k] = s[j] + h / 2 * acc;
+                out.dY[j * m + k] = h / 2 * acc;
+                Yj[k] = s[j] + out.dY[j * m + k];
             }
             double acc = 0, abs_acc = 0;
             for (std::size_t l = 0; l < m; ++l) {
                 acc += R.w[l] * G_[l];
                 abs_acc += R.w[l] * std::fabs(G_[l]);  // Fejer's weights are positive
             }
-            out.end[j] = s[j] + h / 2 * acc;
+            out.dend[j] = h / 2 * acc;
+            out.end[j] = s[j] + out.dend[j];
             out.l1[j] = std::fabs(h) / 2 * abs_acc;
         }
     }
@@ -188,6 +193,7 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
     double p = a, h = L;
     bool halved = false;  // this attempt halves a rejected panel at the same p
     double first = h;     // the width the halvings at p started from
+    int steady = 0;       // panels accepted at this width without growing
     while (p != b) {
         if (++attempts > chain_max_panels) {
             std::ostringstream os;
@@ -203,10 +209,13 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         bool accept = true, forced = false;
         double worst = 0;  // max_j e_j / tol_j
         for (std::size_t j = 0; j < n; ++j) {
-            double d = std::fabs(local.end[j] - fine.end[j]);
-            for (std::size_t k = 0; k < C.n; ++k) d = std::max(d, std::fabs(local.Y[j * C.n + k] - fine.Y[j * F.n + 2 * k + 1]));
+            double d = std::fabs(local.dend[j] - fine.dend[j]);
+            for (std::size_t k = 0; k < C.n; ++k)
+                d = std::max(d, std::fabs(local.dY[j * C.n + k] - fine.dY[j * F.n + 2 * k + 1]));
             e[j] = d;
-            const double tol = 1e-13 * (r.l1[j] + fine.l1[j]) * share;
+            // not below 1e-12 of the panel's own int |g_j|: the rounding of an integrand in double
+            // (a phase of 1e4 rad is rounded to 1e-12) is not chased (the estimate keeps it)
+            const double tol = std::max(1e-13 * (r.l1[j] + fine.l1[j]) * share, 1e-12 * fine.l1[j]);
             if (d <= tol) {
                 if (d > 0) worst = std::max(worst, d / tol);
                 continue;
@@ -221,6 +230,7 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         const bool smallest = std::fabs(h) <= length * std::ldexp(1.0, -45) ||
                               std::fabs(h) <= 64 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(p), std::fabs(p + h));
         if (!accept && !smallest) {
+            steady = 0;
             if (!halved) first = h;
             parent = e;
             halved = true;
@@ -232,8 +242,8 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         // (one quadrature alone: the same increments as the local run)
         if (n > 1) M.run(C, p, h, yc, coarse);
         for (std::size_t j = 0; j < n; ++j) {
-            const double step = n > 1 ? coarse.end[j] - yc[j] : local.end[j] - r.value[j];
-            r.error[j] += std::fabs(step - (fine.end[j] - r.value[j]));
+            const double step = n > 1 ? coarse.dend[j] : local.dend[j];
+            r.error[j] += std::fabs(step - fine.dend[j]);
             yc[j] += step;
             r.value[j] = fine.end[j];
             r.l1[j] += fine.l1[j];
@@ -241,11 +251,18 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         ++r.panels;
         p = (h == b - p) ? b : p + h;
         halved = false;
-        // the next panel: the lower rule's difference grows about like h^31; after a panel
+        // the next panel: the lower rule's difference grows about like h^31, rounding noise like h
+        // (so a width lost to a noisy panel is tried again after four panels); after a panel
         // accepted at the noise (or the smallest width), the width the halvings started from
-        if (forced) h = std::max(std::fabs(h), std::fabs(first)) * (h < 0 ? -1 : 1);
-        else if (worst < 1e-9) h *= 2;
-        else if (worst < 1e-3) h *= 1.5;
+        if (forced) {
+            h = std::max(std::fabs(h), std::fabs(first)) * (h < 0 ? -1 : 1);
+        } else if (worst < 1e-9 || ++steady >= 4) {
+            h *= 2;
+            steady = 0;
+        } else if (worst < 1e-3) {
+            h *= 1.5;
+            steady = 0;
+        }
     }
     r.evaluations = M.evaluations;
     return r;
