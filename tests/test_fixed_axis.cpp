@@ -250,7 +250,7 @@ TEST(FixedAxis, ARateWithoutAnElementaryIntegral) {
 // r = r0 + int_0^t r' (VI.2.51). Without E (and with E along B) r holds the single integrals
 // int_0^t cos(phi), int_0^t sin(phi) of VI.2.52; with E across B the nested ones
 // int_0^t cos(phi(tau)) I_c(tau) dtau ... Check exact; verify as above (measured 8e-13 and
-// 3.7e-13 over 5-10 time units; the nested integrals by one odeint system at 1e-13).
+// 3.7e-13 over 5-10 time units; the nested integrals as one system of quadratures).
 TEST(FixedAxis, ThePositionOfAChargeInAVaryingMagneticField) {
     test_session t;
     ASSERT_EQ(t.run("vector r0, v0, E\npositive m\nB := (1 + t)*[0, 0, 1]\n"
