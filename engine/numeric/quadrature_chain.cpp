@@ -198,7 +198,8 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
         if (++attempts > chain_max_panels) {
             std::ostringstream os;
             os << "integral: the quadrature over [" << a << ", " << b << "] needs more than " << chain_max_panels
-               << " panels (an integrand that oscillates too fast or is not smooth there); not evaluated";
+               << " panels (an integrand that oscillates too fast, is not smooth, or is rounded in double beyond 1e-12 of "
+                  "itself there: a phase of 1e4 rad or more); not evaluated";
             throw domain_error(os.str());
         }
         // the last panel ends exactly at b

@@ -20,11 +20,12 @@
 //
 // Error control and estimate. The 31 points of every other node (the grid of degree 32)
 // give a second, lower-order value of every y_j at those points and at p + h. A panel is
-// accepted when the two agree, for every component, to 1e-13 of the component's scale
-// (int |g_j| so far) times the panel's share h/(b - a) of the interval; otherwise it is
-// halved. A halving that no longer shrinks the difference (rounding noise of the integrand,
-// the two rules agreeing to 1e-10 of the panel's own size) ends the refinement there, as
-// does a panel of 2^-45 of the interval; their difference stays in the estimate.
+// accepted when the two increments agree, for every component, to 1e-13 of the component's
+// scale (int |g_j| so far) times the panel's share h/(b - a) of the interval, or to 1e-12 of
+// the panel's own int |g_j| (the rounding of an integrand in double is not chased); otherwise
+// it is halved. A halving that no longer shrinks the difference (rounding noise of the
+// integrand, the two rules agreeing to 1e-3 of the panel's own size) ends the refinement
+// there, as does a panel of 2^-45 of the interval; their difference stays in the estimate.
 // The estimate: the 31-point rule is also run along the whole march as a second trajectory
 // with its own inner values (so an inner error propagated through the outer integrands is in
 // it), and error_j = sum over the panels of |its increment of y_j - the 63-point rule's|.
