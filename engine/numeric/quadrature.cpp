@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -208,7 +209,7 @@ ex integrals_as_numbers(const ex& e) {
             for (const auto& o : open)
                 spread += std::fabs(accurate_double(x.diff(o.z).subs(at, GiNaC::subs_options::no_pattern))) * o.v.error;
             if (spread <= converged * std::fabs(whole)) return out;
-        } catch (const error&) {
+        } catch (const std::exception&) {  // a value or derivative that does not evaluate: refused below
         }
     }
     const auto worst = std::max_element(open.begin(), open.end(), [](const auto& p, const auto& q) {
