@@ -474,7 +474,8 @@ void register_mechanics_builtins(registry& r) {
         "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
         "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
         "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases). Integral objects "
-        "(int_0^t f dtau) are evaluated by Gauss-Kronrod quadrature. e may be a solution by reduction s "
+        "(int_0^t f dtau, nested ones too) are evaluated by quadrature on Chebyshev panels, to a few ulps of their scale, "
+        "refused with the error estimate where it does not converge (docs/numeric.md). e may be a solution by reduction s "
         "(VI.3) or its derivative s': r or r' at the times (t >= 0), numerically (Q by Magnus on SO(3)).",
         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
         [](const builtin& b, const args_t& a, context&) -> value {

@@ -1,19 +1,20 @@
-// symrep/numeric/quadrature.cpp -- integral objects by Gauss-Kronrod (quadrature.h).
+// symrep/numeric/quadrature.cpp -- integral objects, nested ones included, by one march of
+// Chebyshev panels (quadrature.h, quadrature_chain.h).
 #include "numeric/quadrature.h"
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <exception>
 #include <limits>
 #include <sstream>
 #include <string>
-
-#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <vector>
 
 #include "core/error.h"
-#include "scalar/scalar.h"
 #include "numeric/evaluator.h"
+#include "numeric/quadrature_chain.h"
 #include "numeric/reference.h"
+#include "scalar/scalar.h"
 
 namespace symrep::num {
 
@@ -27,135 +28,205 @@ bool has_integral(const ex& e) {
 
 namespace {
 
-// Gauss-Kronrod (61 points, adaptive to depth 15, 1e-14 of the L1 norm) on a double function.
-// Boost's error estimate (QUADPACK's rescaled |K - G|) is pessimistic for a smooth integrand
-// on a short interval: 2e-14 for int_0^0.002 sin(x + x^2/2) = 2.08e-6, when the value is right
-// to the last digits. When it stays above 1e-8 of the L1 norm, the two halves are integrated
-// again: their sum agreeing with the whole to 1e-12 confirms the value; otherwise it is refused.
-template <class F>
-double gauss_kronrod(F&& g, double a, double b, bool& finite) {
-    using rule = boost::math::quadrature::gauss_kronrod<double, 61>;
-    if (a == b) return 0.0;
-    auto not_finite = [&] {
-        return domain_error("integral: the integrand is not finite on [" + std::to_string(a) + ", " +
-                            std::to_string(b) + "]");
-    };
-    const double floor = std::numeric_limits<double>::min();
-    // one 61-point rule, then the two halves: agreeing to 1e-13 of the L1 norm they settle a
-    // smooth integrand in 183 evaluations (the adaptive rule would chase an unreachable estimate)
-    double error = 0, l1 = 0;
-    const double whole = rule::integrate(g, a, b, 0, 0.0, &error, &l1);
-    if (!finite) throw not_finite();
-    if (error <= 1e-14 * std::max(l1, floor)) return whole;
-    const double m = a + (b - a) / 2;
-    double e1 = 0, e2 = 0, n1 = 0, n2 = 0;
-    const double halves = rule::integrate(g, a, m, 0, 0.0, &e1, &n1) + rule::integrate(g, m, b, 0, 0.0, &e2, &n2);
-    if (!finite) throw not_finite();
-    if (std::abs(halves - whole) <= 1e-13 * std::max({l1, n1 + n2, floor})) return halves;
-    // otherwise adaptively, to depth 15
-    const double value = rule::integrate(g, a, b, 15, 1e-14, &error, &l1);
-    if (!finite) throw not_finite();
-    if (error <= 1e-8 * std::max(l1, floor)) return value;
-    std::ostringstream os;
-    os << "integral: the quadrature over [" << a << ", " << b << "] did not converge (error estimate " << error
-       << " for the value " << value << ")";
-    throw domain_error(os.str());
+bool has_symbol(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
+    return false;
 }
+
+// The integral objects of an integrand as the unknowns of y_j' = g_j(x, y_0, ..., y_{j-1}),
+// inner ones first (each int_c^s g(sigma) dsigma with s the variable of the integral around it
+// is one unknown, the same integral met twice one unknown), the integrand itself last.
+struct quadrature_system {
+    const GiNaC::symbol x{"x"};        // the march variable
+    std::vector<GiNaC::symbol> y;      // the unknowns
+    std::vector<ex> g;                 // g_j in x and y_0 .. y_{j-1}
+    std::vector<ex> lower;             // c_j
+    std::vector<ex> variable, written; // s and g(s) as written (the start value when c_j != a)
+
+    // e (in the variable s) with its integral objects replaced by unknowns
+    ex reduce(const ex& e, const ex& s) {
+        if (GiNaC::is_a<GiNaC::integral>(e)) return y[unknown(e, s)];
+        if (e.nops() == 0 || !has_integral(e)) return e;
+        struct recurse : GiNaC::map_function {
+            quadrature_system& q;
+            const ex& s;
+            recurse(quadrature_system& qs, const ex& v) : q(qs), s(v) {}
+            ex operator()(const ex& c) override { return q.reduce(c, s); }
+        } inner(*this, s);
+        return e.map(inner);
+    }
+
+    // the unknown of int_c^s g(sigma) dsigma met in an integrand in s
+    std::size_t unknown(const ex& I, const ex& s) {
+        const ex sigma = I.op(0), c = I.op(1);
+        if (!GiNaC::is_a<GiNaC::symbol>(sigma) || sigma.is_equal(s) || !I.op(2).is_equal(s) || has_symbol(c))
+            throw domain_error("integral: the nested integral in " + message_text(sigma) + " from " + message_text(c) +
+                               " to " + message_text(I.op(2)) + " is not of the form int_c^" + message_text(s) +
+                               " g(sigma) dsigma with g in its own variable sigma and a number c");
+        const ex gs = reduce(I.op(3), sigma);
+        check_symbols(gs, sigma);
+        const ex gx = gs.subs(sigma == x, GiNaC::subs_options::no_pattern);
+        for (std::size_t j = 0; j < g.size(); ++j)
+            if (lower[j].is_equal(c) && g[j].is_equal(gx)) return j;
+        return add(gx, c, sigma, I.op(3));
+    }
+
+    std::size_t add(const ex& gx, const ex& c, const ex& s, const ex& as_written) {
+        y.emplace_back("y" + std::to_string(y.size()));
+        g.push_back(gx);
+        lower.push_back(c);
+        variable.push_back(s);
+        written.push_back(as_written);
+        return g.size() - 1;
+    }
+
+    // only s and the unknowns may be left
+    void check_symbols(const ex& e, const ex& s) const {
+        for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(s) &&
+                std::none_of(y.begin(), y.end(), [&](const GiNaC::symbol& u) { return it->is_equal(u); }))
+                throw domain_error("integral: the integrand in " + message_text(s) + " has symbols without values (" +
+                                   message_text(*it) + ")");
+    }
+};
 
 }  // namespace
 
-double integrate_numerically(const ex& variable, double a, double b, const ex& integrand) {
-    if (!std::isfinite(a) || !std::isfinite(b))
-        throw type_error("integral: the limits must be finite numbers");
-    if (a == b) return 0.0;
-    const compiled_function f = compile(integrand, {variable});
-    bool finite = true;
-    auto g = [&](double x) {
-        double y;
-        f.eval(&x, &y);
-        if (!std::isfinite(y)) finite = false;
-        return y;
-    };
-    return gauss_kronrod(g, a, b, finite);
-}
-
-double integrate_nested(const ex& x, double a, double b, const ex& f) {
-    // the inner integrals int_c^x g(s) ds (c a number, g in s alone) become the variables y_j
-    std::vector<ex> vars{x};
-    std::vector<compiled_function> inner;
-    std::vector<double> lower;
-    GiNaC::exmap to_y;
-    for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it) {
-        if (!GiNaC::is_a<GiNaC::integral>(*it) || to_y.count(*it)) continue;
-        const ex s = it->op(0), c = it->op(1), g = it->op(3);
-        auto refuse = [&] {
-            return domain_error("integral: the nested integral " + message_text(*it) + " is not of the form int_c^" +
-                                message_text(x) + " g(s) ds with g in its own variable s and a number c");
-        };
-        if (!GiNaC::is_a<GiNaC::symbol>(s) || s.is_equal(x) || !it->op(2).is_equal(x) || has_integral(g)) throw refuse();
-        for (auto jt = c.preorder_begin(); jt != c.preorder_end(); ++jt)
-            if (GiNaC::is_a<GiNaC::symbol>(*jt)) throw refuse();
-        for (auto jt = g.preorder_begin(); jt != g.preorder_end(); ++jt)
-            if (GiNaC::is_a<GiNaC::symbol>(*jt) && !jt->is_equal(s)) throw refuse();
-        const GiNaC::symbol y;
-        to_y[*it] = y;
-        vars.push_back(y);
-        inner.push_back(compile(g, {s}));
-        lower.push_back(accurate_double(c));
+integral_value evaluate_integral(const ex& variable, double a, double b, const ex& integrand) {
+    if (!std::isfinite(a) || !std::isfinite(b)) throw type_error("integral: the limits must be finite numbers");
+    integral_value out;
+    if (a == b) return out;
+    quadrature_system q;
+    const ex top = q.reduce(integrand, variable);
+    q.check_symbols(top, variable);
+    q.add(top.subs(variable == q.x, GiNaC::subs_options::no_pattern), a, variable, integrand);
+    const std::size_t n = q.g.size();
+    // y_j(a): 0 when the inner integral starts at a, else int_c^a of it (the same method)
+    std::vector<double> start(n, 0.0);
+    for (std::size_t j = 0; j + 1 < n; ++j) {
+        const double c = accurate_double(q.lower[j]);
+        if (c != a) start[j] = evaluate_integral(q.variable[j], c, a, q.written[j]).value;
     }
-    const ex outer = f.subs(to_y, GiNaC::subs_options::no_pattern);
-    for (auto it = outer.preorder_begin(); it != outer.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::integral>(*it) ||
-            (GiNaC::is_a<GiNaC::symbol>(*it) && std::find(vars.begin(), vars.end(), *it) == vars.end()))
-            throw domain_error("integral: the integrand " + message_text(f) + " has symbols without values");
-    const compiled_function F = compile(outer, vars);
-    bool finite = true;
-    auto h = [&](double t) {
-        // each inner integral by the same rule at this node of the outer one
-        std::vector<double> at(vars.size());
-        at[0] = t;
-        for (std::size_t j = 0; j < inner.size(); ++j) {
-            const compiled_function& g = inner[j];
-            at[j + 1] = gauss_kronrod(
-                [&](double s) {
-                    double y;
-                    g.eval(&s, &y);
-                    if (!std::isfinite(y)) finite = false;
-                    return y;
-                },
-                lower[j], t, finite);
-        }
-        double y;
-        F.eval(at.data(), &y);
-        if (!std::isfinite(y)) finite = false;
-        return y;
+    std::vector<ex> inputs{q.x};
+    for (const auto& s : q.y) inputs.push_back(s);
+    std::vector<compiled_function> f;
+    f.reserve(n);
+    for (const ex& gj : q.g) f.push_back(compile(gj, inputs));
+    std::vector<double> at(n + 1, 0.0);
+    const chain_integrand G = [&](std::size_t j, double x, const double* y) {
+        at[0] = x;
+        std::copy(y, y + j, at.begin() + 1);
+        double v;
+        f[j].eval(at.data(), &v);
+        return v;
     };
-    return gauss_kronrod(h, a, b, finite);
+    const chain_result r = integrate_chain(G, n, a, b, start, message_text(variable));
+    out.value = r.value.back();
+    out.error = r.error.back();
+    out.scale = std::max(r.l1.back(), std::fabs(out.value));
+    out.panels = r.panels;
+    out.evaluations = r.evaluations;
+    return out;
 }
 
-ex integrals_as_numbers(const ex& e) {
+namespace {
+
+constexpr double converged = 1e-10;  // of the scale: the estimate that is accepted
+
+std::string not_converged(const ex& variable, double a, double b, const integral_value& v, const std::string& more = "") {
+    std::ostringstream os;
+    os.precision(3);
+    os << "integral: the quadrature in " << message_text(variable) << " over [" << a << ", " << b
+       << "] did not converge (error estimate " << v.error << " for the value " << v.value << ", int |f| = "
+       << v.scale << more << ")";
+    return os.str();
+}
+
+double judged(const ex& variable, double a, double b, const ex& integrand) {
+    const integral_value v = evaluate_integral(variable, a, b, integrand);
+    if (v.error <= converged * v.scale) return v.value;
+    throw domain_error(not_converged(variable, a, b, v));
+}
+
+// An integral object evaluated but not converged by its own scale: judged with the whole expression.
+struct open_integral {
+    GiNaC::symbol z;
+    integral_value v;
+    ex variable;
+    double a = 0, b = 0;
+};
+
+// e with its integral objects (numeric limits, no symbol but their variables) replaced by their
+// values, those whose estimate is above 1e-10 of their own scale by symbols (open)
+ex values_of_integrals(const ex& e, std::vector<open_integral>& open) {
     if (!has_integral(e)) return e;
     if (GiNaC::is_a<GiNaC::integral>(e)) {
         const ex x = e.op(0);
-        const ex f = integrals_as_numbers(e.op(3));
+        const ex f = integrals_as_numbers(e.op(3));  // constant integrals inside, judged alone
         const ex a = e.op(1), b = e.op(2);
         if (!GiNaC::is_a<GiNaC::symbol>(x)) return e;
         // the limits as doubles (exact expressions such as 7/3 or pi)
         auto limit = [&](const ex& l, double& out) {
-            if (l.has(x)) return false;
-            for (auto it = l.preorder_begin(); it != l.preorder_end(); ++it)
-                if (GiNaC::is_a<GiNaC::symbol>(*it)) return false;
+            if (l.has(x) || has_symbol(l)) return false;
             out = accurate_double(l);
             return true;
         };
         double A, B;
         if (!limit(a, A) || !limit(b, B)) return e;
-        if (has_integral(f)) return GiNaC::numeric(integrate_nested(x, A, B, f));
-        for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
-            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(x)) return e;
-        return GiNaC::numeric(integrate_numerically(x, A, B, f));
+        if (!has_integral(f))
+            for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
+                if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(x)) return e;
+        const integral_value v = evaluate_integral(x, A, B, f);
+        if (v.error <= converged * v.scale) return GiNaC::numeric(v.value);
+        open.push_back({GiNaC::symbol("z"), v, x, A, B});
+        return open.back().z;
     }
-    return e.map([](const ex& c) { return integrals_as_numbers(c); });
+    struct recurse : GiNaC::map_function {
+        std::vector<open_integral>& open;
+        explicit recurse(std::vector<open_integral>& o) : open(o) {}
+        ex operator()(const ex& c) override { return values_of_integrals(c, open); }
+    } inner(open);
+    return e.map(inner);
+}
+
+}  // namespace
+
+ex integrals_as_numbers(const ex& e) {
+    std::vector<open_integral> open;
+    const ex x = values_of_integrals(e, open);
+    if (open.empty()) return x;
+    GiNaC::exmap at;
+    for (const auto& o : open) at[o.z] = GiNaC::numeric(o.v.value);
+    const ex out = x.subs(at, GiNaC::subs_options::no_pattern);
+    // an integral that is small in the whole (t = 0.006 in r = r0 + ...): its estimate judged
+    // against the expression's value, sum_k |d e/d I_k| error_k <= 1e-10 |e|
+    double whole = std::numeric_limits<double>::quiet_NaN();
+    if (!has_symbol(out)) {
+        try {
+            whole = accurate_double(out);
+            double spread = 0;
+            for (const auto& o : open)
+                spread += std::fabs(accurate_double(x.diff(o.z).subs(at, GiNaC::subs_options::no_pattern))) * o.v.error;
+            if (spread <= converged * std::fabs(whole)) return out;
+        } catch (const std::exception&) {  // a value or derivative that does not evaluate: refused below
+        }
+    }
+    const auto worst = std::max_element(open.begin(), open.end(), [](const auto& p, const auto& q) {
+        return p.v.error / std::max(p.v.scale, 1e-300) < q.v.error / std::max(q.v.scale, 1e-300);
+    });
+    std::ostringstream more;
+    more.precision(3);
+    if (std::isfinite(whole)) more << ", the whole value " << whole;
+    throw domain_error(not_converged(worst->variable, worst->a, worst->b, worst->v, more.str()));
+}
+
+double integrate_numerically(const ex& variable, double a, double b, const ex& integrand) {
+    return judged(variable, a, b, integrand);
+}
+
+double integrate_nested(const ex& variable, double a, double b, const ex& integrand) {
+    return judged(variable, a, b, integrand);
 }
 
 }  // namespace symrep::num

@@ -1,19 +1,27 @@
-// symrep/numeric/quadrature.h -- integral objects int_a^b f(tau) dtau of closed
-// forms, evaluated by adaptive Gauss-Kronrod quadrature (Boost.Math).
+// symrep/numeric/quadrature.h -- integral objects int_a^b f(tau) dtau of closed forms,
+// nested ones included, evaluated by one march of Chebyshev panels (quadrature_chain.h).
 //
-// A solution keeps an integral it cannot do in closed form as a GiNaC::integral
-// (the I_c, I_s of VI.2.62-63: int_0^t cos alpha(tau) dtau with alpha not linear).
-// GiNaC's own evalf of an integral is an adaptive Simpson rule to 1e-8 relative;
-// here each integral with numeric limits and an integrand in tau alone is
-// compiled (numeric/evaluator.h) and integrated by the 61-point Gauss-Kronrod
-// rule: once over the interval, then over its two halves; when the two agree to
-// 1e-13 of the L1 norm (a smooth integrand: a few ulps, 183 evaluations) that is
-// the value. Otherwise the rule is subdivided adaptively (to depth 15) until the
-// Kronrod error estimate is below 1e-14 of the L1 norm; that estimate is
-// pessimistic (on short intervals it has a floor near 1e-14 absolute), and an
-// integrand with rounding noise never meets 1e-14, so a result is refused only
-// when the estimate stays above 1e-8 of the L1 norm.
+// A solution keeps an integral it cannot do in closed form as a GiNaC::integral (the
+// I_c, I_s of VI.2.62-63: int_0^t cos alpha(tau) dtau with alpha not linear), and the
+// position of a charge integrated from such a velocity holds nested ones (VI.2.51):
+// int_0^t c(tau) (int_0^tau g(sigma) dsigma) dtau. GiNaC's own evalf of an integral is an
+// adaptive Simpson rule to 1e-8 relative; here an integral with numeric limits is compiled
+// (numeric/evaluator.h) with every integral object inside it, to any depth, as one
+// unknown of a lower-triangular system y_j' = g_j(x, y_0, ..., y_{j-1}) (an inner
+// int_c^x g(s) ds is y_j with y_j(c) = 0), and that system is integrated once from a to b
+// on adaptive Chebyshev panels: the inner values at the outer nodes come with the inner
+// quadrature, so the work is linear in the length of [a, b] (t = 30 for the charge in
+// B = (1 + t^2/10) n: about 1e5 evaluations), where a quadrature at each node of another
+// one was quadratic (minutes).
+//
+// Accuracy: a few ulps of the scale for smooth integrands. The estimate (the lower-order
+// rule's own trajectory, quadrature_chain.h) is judged against the scale of the whole
+// integral, S = max(int_a^b |f|, |value|), never of a piece: the value is refused, with
+// the estimate said, when the estimate exceeds 1e-10 S (an integrand that is not finite,
+// not integrable, or noisy beyond that).
 #pragma once
+
+#include <cstddef>
 
 #include <ginac/ginac.h>
 
@@ -22,22 +30,31 @@ namespace symrep::num {
 /// True when e holds a GiNaC::integral.
 bool has_integral(const GiNaC::ex& e);
 
-/// int_a^b f: symrep::type_error when a, b are not numbers or f has a symbol
-/// other than the variable; symrep::domain_error when f is not finite on [a, b]
-/// or the quadrature does not converge (the estimate is said).
+/// One integral with its estimate (see above).
+struct integral_value {
+    double value = 0;
+    double error = 0;           ///< the estimate of |value - exact|
+    double scale = 0;           ///< max(int_a^b |f|, |value|)
+    std::size_t panels = 0;     ///< accepted panels of the march
+    std::size_t evaluations = 0;  ///< of the integrands, inner ones included
+};
+
+/// int_a^b f(x) dx where f may hold integral objects int_c^x g(s) ds (c a number, g in its
+/// own variable s alone and in integral objects int_d^s ... of the same form, to any depth):
+/// the value and its estimate, not judged. symrep::type_error for limits that are not finite;
+/// symrep::domain_error for another form of nesting or a symbol left (named), an integrand
+/// that is not finite at a node (the point said), or a march of more than chain_max_panels.
+integral_value evaluate_integral(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
+
+/// int_a^b f: evaluate_integral, refused (symrep::domain_error with the estimate) when the
+/// estimate exceeds 1e-10 of the scale.
 double integrate_numerically(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
 
-/// int_a^b f(x) dx where f holds integral objects int_c^x g(s) ds (c a number, g in its own
-/// variable s alone): the nested integrals of a position integrated from a velocity that holds
-/// integral objects (VI.2.51 with VI.2.62). Each inner integral by the same rule at each node of
-/// the outer one (a smooth integrand: 183 x 183 evaluations). Not as the ODE system y' = g,
-/// z' = f(x, y): Fehlberg 7(8)'s error estimate vanishes on y' = g(x) (its stages 12 and 13
-/// repeat 1 and 11), and rkf78 at 1e-13 left 2e-10 there. domain_error for another form of
-/// nesting or a symbol left.
+/// The same for an integrand with integral objects inside (kept for its name: one method).
 double integrate_nested(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
 
-/// e with every integral object whose limits are numbers and whose integrand has
-/// no symbol but its variable (or nested integrals, integrate_nested) replaced by its value.
+/// e with every integral object whose limits are numbers and whose integrand has no symbol
+/// but its variable (and nested integral objects of the form above) replaced by its value.
 GiNaC::ex integrals_as_numbers(const GiNaC::ex& e);
 
 }  // namespace symrep::num
