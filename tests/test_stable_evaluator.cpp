@@ -262,3 +262,59 @@ TEST(StableEvaluator, RemovableSingularitiesHaveTheirLimit) {
     p.eval(&zero, &x);
     EXPECT_TRUE(std::isinf(x));
 }
+
+// Issue 27: every magnitude a double holds. The expected values are checked
+// independently with mpmath at 1500 digits (tests/python/test_stable_magnitudes.py
+// recomputes them): (1 - cos(w))/w^2 -> 1/2 and (w - sin(w))/w^3 -> 1/6 for |w| <= 1e-20
+// to far below 1e-16 relative, so 1e-15 is the double rounding plus the tier's tolerance.
+TEST(StableEvaluator, CancellationAtEveryMagnitude) {
+    const GiNaC::symbol w("w"), t("t");
+    const std::vector<ex> terms = {(1 - GiNaC::cos(w * t)) / GiNaC::pow(w, 2),
+                                   (w * t - GiNaC::sin(w * t)) / GiNaC::pow(w, 3),
+                                   (w * t - GiNaC::sin(w * t)) / GiNaC::pow(w, 3) + 1};
+    const num::stable_function f(terms, {w, t});
+    for (double W : {1e-20, 1e-40, 3e-41, 1e-70, 1e-100, 1e-150, 2.5e-200, 1e-250, 1e-300}) {
+        const double in[2] = {W, 1.0};
+        std::vector<double> v(3);
+        f.eval(in, v.data());
+        EXPECT_NEAR(v[0], 0.5, 1e-15) << "w = " << W;
+        EXPECT_NEAR(v[1], 1.0 / 6, 1e-15) << "w = " << W;
+        EXPECT_NEAR(v[2], 7.0 / 6, 2e-15) << "w = " << W;  // agreement of precisions would give 1
+    }
+}
+
+TEST(StableEvaluator, TheBoundsOfTheDoubleTiersAreTrue) {
+    // The gravity solution at w = [0, e, e] (issue 27 1.3): x was 9.999992263 at e = 1e-12
+    // and -1.39e12 at e = 1e-30 (the double tiers accepted wrong values). Reference values:
+    // mpmath, 1500 digits, from r = exp(-t W) rho (tests/python/test_stable_magnitudes.py).
+    const derived d = derive(
+        "vector w, g, r0, v0\n"
+        "s := solve(ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0))\n"
+        "subs(s, [w = [wa, wb, wc], g = [0, 0, -9.81], r0 = [0, 0, 0], v0 = [1, 0, 0]])");
+    const ex t = d.find("t"), wx = d.find("wa"), wy = d.find("wb"), wz = d.find("wc");
+    const num::stable_function f(d.outputs, {wx, wy, wz, t});
+    struct row {
+        double e, x, y, z;
+    };
+    for (const row& r : {row{1e-8, 10.0000326999999, -1.0000012262499966876e-6, -490.49999899999879862},
+                         row{1e-12, 10.00000000327, -1.0000000001226249799e-10, -490.49999999990002487},
+                         row{1e-30, 10.0, -1.0000000000000000833e-28, -490.50000000000002487},
+                         row{1e-49, 10.0, -9.999999999999999364e-48, -490.50000000000002487}}) {
+        const double in[4] = {0.0, r.e, r.e, 10.0};
+        std::vector<double> v(3), value(3), bound(3);
+        f.eval(in, v.data());
+        EXPECT_NEAR(v[0], r.x, 1e-14 * 10) << "e = " << r.e;
+        EXPECT_NEAR(v[1], r.y, 1e-14 * std::fabs(r.y)) << "e = " << r.e;
+        EXPECT_NEAR(v[2], r.z, 1e-14 * 490.5) << "e = " << r.e;
+        // each tier's bound is a true bound where it is finite
+        const double ref[3] = {r.x, r.y, r.z};
+        f.eval_binary64(in, value.data(), bound.data());
+        for (int i = 0; i < 3; ++i)
+            EXPECT_LE(std::fabs(value[i] - ref[i]), bound[i] * 1.01 + 1e-15 * std::fabs(ref[i]))
+                << "binary64, e = " << r.e << ", output " << i;
+        f.eval_binary128(in, value.data(), bound.data());
+        for (int i = 0; i < 3; ++i)
+            EXPECT_LE(std::fabs(value[i] - ref[i]), bound[i] * 1.01 + 1e-15 * std::fabs(ref[i]))
+                << "binary128, e = " << r.e << ", output " << i;
+    }
+}

@@ -140,7 +140,9 @@ double to_double(const ex& x, const builtin& b, const std::string& what) {
     try {
         return num::accurate_double(x);
     } catch (const domain_error& e) {
-        if (std::string(e.what()).rfind("integral:", 0) == 0) throw domain_error(b.name + ": " + e.what());
+        const std::string m = e.what();
+        if (m.rfind("integral:", 0) == 0 || m.rfind("cannot evaluate to double precision", 0) == 0)
+            throw domain_error(b.name + ": " + m);
         throw type_error(b.name + ": " + what + " does not evaluate to a real number: " +
                          message_text(GiNaC::evalf(x)) + " (give every symbol a value)");
     }

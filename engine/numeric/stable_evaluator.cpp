@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "numeric/certified.h"
 #include "numeric/reference.h"
 
 namespace symrep::num {
@@ -128,16 +129,18 @@ constant_split split_constant(double c, const GiNaC::ex& source, bool known) {
     const double unknown64 = std::fabs(c) * 0x1p-52;
     if (!known) return {unknown64, __float128(c), __float128(unknown64), 0.0, unknown64};
     try {
-        const cln::cl_R r = cln::the<cln::cl_R>(evaluate_real(source, 60).to_cl_N());
-        const cln::cl_RA c_exact = cln::rational(cln::cl_DF(c));
-        const double hi = c, lo = cln::double_approx(r - c_exact);
+        // exact - c to 2^-70 relative with a proved bound (numeric/certified.h): a
+        // constant that cancels (1 - cos(1e-30)) is not 0 at 60 digits, as GiNaC's evalf has it
+        const certified_result rest = certified_double(source - exact_rational(c), 0x1p-70, 2560);
+        if (!rest.proved) {
+            const double inf = std::numeric_limits<double>::infinity();
+            return {inf, __float128(c), __float128(inf), 0.0, inf};
+        }
+        const double hi = c, lo = rest.value;
         const __float128 q = __float128(hi) + __float128(lo);
-        // the exact errors, rounded up a little (60 digits are ~1e-60 relative)
-        const double e64 = std::fabs(cln::double_approx(r - c_exact)) * (1 + 1e-12);
-        const double e128 =
-            std::fabs(cln::double_approx(r - c_exact - cln::rational(cln::cl_DF(lo)))) * (1 + 1e-12) +
-            std::fabs(c) * 1e-55;
-        // q = hi + lo needs no rounding when lo is below hi's last bit by < 60 bits
+        // |exact - c - lo| <= rest's bound + the rounding of lo to double
+        const double e128 = (rest.bound + std::fabs(lo) * 0x1p-52) * (1 + 1e-12) + std::fabs(c) * 1e-55;
+        const double e64 = std::fabs(lo) * (1 + 1e-12) + e128;
         return {e64, q, __float128(e128) + arith<__float128>::u * fabsq(q), lo, e128};
     } catch (const std::exception&) {
         return {unknown64, __float128(c), __float128(unknown64), 0.0, unknown64};
@@ -420,7 +423,9 @@ void stable_function::eval_binary128(const double* in, double* value, double* bo
 precision_tier stable_function::eval(const double* in, double* out) const {
     const std::size_t m = program_.outputs_.size();
     auto accepted = [&](double v, double b) {
-        return b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol;
+        // an infinite value is no answer of a tier (inf <= rel_tol * inf): 1/|w|^4 overflows
+        // at |w| = 1e-300 in a form whose value is finite
+        return std::isfinite(v) && (b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol);
     };
     thread_local std::vector<double> b;
     b.resize(m);
@@ -435,19 +440,37 @@ precision_tier stable_function::eval(const double* in, double* out) const {
         if (!accepted(out[i], b[i])) pending.push_back(i);  // NaN and inf too: 0/0 may have a limit
     if (pending.empty()) return precision_tier::binary128;
 
-    // Tier 3: CLN at the exact binary inputs, doubling the digits until two
-    // successive values agree (Ziv). A value that is exactly zero at two
-    // successive precisions of 160 digits or more is taken as zero. An output
-    // without a real value (log of a negative number, a pole) keeps binary128's
+    // Tier 3: CLN at the exact binary inputs with a proved error bound
+    // (numeric/certified.h), the precision doubled until the bound is rel_tol / 4
+    // relative. (Two precisions that agree prove nothing: both lose every digit of
+    // (1 - cos(w t))/w^2 at w = 1e-100 up to 160 digits.) At a removable
+    // singularity (0/0 at the point) the limit (numeric/reference.h, value_at).
+    // An output that max_digits do not bound is NaN: not known, never a guess.
+    // One without a real value (log of a negative number, a pole) keeps binary128's
     // NaN or infinity.
     const std::vector<double> point(in, in + program_.n_inputs_);
     for (std::size_t i : pending) {
-        const std::vector<GiNaC::ex> one{outputs_[i]};
+        GiNaC::ex at;
+        try {
+            at = value_at(outputs_[i], inputs_, point);
+        } catch (const domain_error&) {
+            continue;
+        }
+        try {
+            const certified_result r = certified_double(at, options_.rel_tol * 0.25, options_.max_digits);
+            out[i] = r.proved ? r.value : std::numeric_limits<double>::quiet_NaN();
+            continue;
+        } catch (const domain_error&) {
+            continue;
+        } catch (const not_certifiable&) {
+        }
+        // not covered by the bound (a complex intermediate value, another function):
+        // precisions raised until two agree, none below 160 digits for a 0
         long double previous = 0;
         for (int digits = 40; digits <= options_.max_digits; digits *= 2) {
             long double now;
             try {
-                now = reference_eval(one, inputs_, point, digits)[0];
+                now = reference_eval({at}, {}, {}, digits)[0];
             } catch (const domain_error&) {
                 break;
             }
