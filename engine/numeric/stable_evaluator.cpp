@@ -36,6 +36,7 @@ template <>
 struct arith<double> {
     static constexpr double u = 0x1p-53;
     static constexpr double f_err = 0x1p-52;  // glibc: < 1 ulp for these functions
+    static constexpr double min_normal = 0x1p-1022, eta = 0x1p-1074;  // below min_normal: eta absolute
     static double abs(double x) { return std::fabs(x); }
     static double sqrt(double x) { return std::sqrt(x); }
     static double exp(double x) { return std::exp(x); }
@@ -64,6 +65,7 @@ struct arith<__float128> {
     using q = __float128;
     static constexpr q u = 0x1p-113;
     static constexpr q f_err = 0x1p-110;  // libquadmath: a few ulp
+    static inline const q min_normal = ldexpq(1, -16382), eta = ldexpq(1, -16494);
     static q abs(q x) { return fabsq(x); }
     static q sqrt(q x) { return sqrtq(x); }
     static q exp(q x) { return expq(x); }
@@ -353,6 +355,12 @@ void stable_function::run(const T* constants, const T* constant_bounds, const do
                 break;
             }
         }
+        // Underflow: below the smallest normal number a rounding is eta (half a subnormal ulp,
+        // rounded up), not u |v|: w^2 = 0 at w = 1e-170 is no exact 0. Sums are exact there,
+        // and an exact 0 operand gives an exact 0 (sin 0, 0 * x).
+        if (A::abs(v) < A::min_normal && ins.op != opcode::add && ins.op != opcode::sub &&
+            ins.op != opcode::neg && ins.op != opcode::abs && a != 0 && (ins.op != opcode::mul || b != 0))
+            e += A::eta;
         value[ins.dst] = v;
         bound[ins.dst] = A::finite(e) ? e : inf;
     }
@@ -370,12 +378,16 @@ void stable_function::run_phase(const instruction& ins, const phase_operands& ph
     const double x = in[ph.input], hi = program_.constants_[k], lo = constant_lo64_[k];
     const double p = hi * x;
     const double d = std::fma(hi, x, -p) + lo * x;
-    const double phase_bound = std::fabs(x) * constant_bound_dd_[k] + A::u * std::fabs(d) * 2 + 0.5 * d * d;
+    const double phase_bound = std::fabs(x) * constant_bound_dd_[k] + A::u * std::fabs(d) * 2;
     const double s = std::sin(p), c = std::cos(p);
     const double sv = s + d * c, cv = c - d * s;
+    // The first-order correction leaves |sin(p + d) - (s + d c)| <= d^2/2 + |d|^3/6: an error
+    // of the value, whatever the derivative at the point (added as such, not as a phase error
+    // scaled by |cos|, which vanishes where sin peaks).
+    const double second_order = (0.5 * d * d + std::fabs(d * d * d) / 6) * (1 + 4 * A::u);
     auto b = [&](double v, double deriv) {
-        return min(1.0, deriv + phase_bound) * phase_bound + A::f_err * (std::fabs(s) + std::fabs(c)) +
-               2 * A::u * std::fabs(v);
+        return min(1.0, deriv + phase_bound) * phase_bound + second_order +
+               A::f_err * (std::fabs(s) + std::fabs(c)) * (1 + std::fabs(d)) + 2 * A::u * std::fabs(v);
     };
     switch (ins.op) {
         case opcode::sin:
@@ -415,8 +427,10 @@ void stable_function::eval_binary128(const double* in, double* value, double* bo
     for (std::size_t i = 0; i < program_.outputs_.size(); ++i) {
         const __float128 v = r[program_.outputs_[i]];
         value[i] = static_cast<double>(v);
-        // plus the rounding to double
-        bound[i] = static_cast<double>(e[program_.outputs_[i]]) + std::fabs(value[i]) * 0x1p-53;
+        // plus the rounding to double (eta where it underflows), rounded up
+        const __float128 eq = e[program_.outputs_[i]];
+        bound[i] = static_cast<double>(eq) * (1 + 0x1p-52) + std::fabs(value[i]) * 0x1p-53 +
+                   (std::fabs(value[i]) < 0x1p-1022 && (v != 0 || eq != 0) ? 0x1p-1074 : 0.0);
     }
 }
 
@@ -425,7 +439,9 @@ precision_tier stable_function::eval(const double* in, double* out) const {
     auto accepted = [&](double v, double b) {
         // an infinite value is no answer of a tier (inf <= rel_tol * inf): 1/|w|^4 overflows
         // at |w| = 1e-300 in a form whose value is finite
-        return std::isfinite(v) && (b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol);
+        // (or within two subnormal ulps: the double is then right to the last bit doubles have there)
+        return std::isfinite(v) &&
+               (b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol || b <= 0x1p-1073);
     };
     thread_local std::vector<double> b;
     b.resize(m);
