@@ -88,7 +88,8 @@ ex put_values(const ex& e, const data_values& d) {
 }
 
 // Where the values make e singular (w = 0 in sin(|w| t)/|w|), its limit: each
-// zero value x becomes lambda x' (x' a fixed generic direction or 1) and the
+// zero value x becomes lambda x' (a vector: x' a fixed generic direction; a scalar:
+// lambda^2, so that sqrt(k) is lambda) and the
 // lambda^0 term of the series in lambda is taken (the exact limit lambda -> 0).
 ex put_values_limit(const ex& e, const data_values& d) {
     try {
@@ -103,8 +104,10 @@ ex put_values_limit(const ex& e, const data_values& d) {
             x = vector_literal(lambda * 3, lambda * 5, lambda * 7) / 7;
             any = true;
         }
+    // a scalar as lambda^2: the forms of a spring constant k = 0 have sqrt(k) (sqrt(k/m) t),
+    // a series in lambda then, not in sqrt(lambda) (which GiNaC's series does not expand)
     for (auto& [k, x] : dl.scalars)
-        if (GiNaC::normal(x).is_zero()) { x = lambda; any = true; }
+        if (GiNaC::normal(x).is_zero()) { x = GiNaC::pow(lambda, 2); any = true; }
     if (!any) return put_values(e, d);  // rethrows the original error
     const ex c = put_values(e, dl);
     auto lim = [&](const ex& x) {
