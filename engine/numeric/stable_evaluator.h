@@ -25,8 +25,14 @@
 //      their exact values; phases such as w0 t are then formed with an error
 //      of 1e-34 relative, and cancellations of up to about 1e16 are absorbed.
 //   3. multiprecision: the outputs that still fail are evaluated by CLN at the
-//      exact binary inputs (numeric/reference.h) with 40, 80, 160 ... decimal
-//      digits until two successive precisions agree to rel_tol.
+//      exact binary inputs with a proved error bound (numeric/certified.h),
+//      the digits doubled until the bound is rel_tol / 4 relative (two
+//      precisions that agree prove nothing: both can lose every digit to a
+//      cancellation). An output that max_digits do not bound is NaN.
+//
+//   In tiers 1 and 2 an output is accepted only when it is finite; below the
+//   smallest normal number each rounding is bounded by half a subnormal ulp
+//   (underflow is no exact 0).
 //
 // So the result is the exact value of the closed form at the given doubles,
 // correctly rounded up to a small multiple of rel_tol, at the cost of the
