@@ -501,6 +501,29 @@ precision_tier stable_function::eval(const double* in, double* out) const {
     return precision_tier::multiprecision;
 }
 
+std::vector<std::size_t> stable_function::eval_many_binary64(const double* in, double* out, std::size_t n,
+                                                             double check_tol) const {
+    const std::size_t k = n_inputs(), m = n_outputs();
+    std::vector<double> bound(m);
+    std::vector<std::size_t> again;
+    for (std::size_t r = 0; r < n; ++r) {
+        eval_binary64(in + r * k, out + r * m, bound.data());
+        for (std::size_t i = 0; i < m; ++i) {
+            const double v = out[r * m + i];
+            if (!std::isfinite(v) || !(bound[i] <= check_tol * std::fabs(v) || bound[i] <= 0x1p-1073)) {
+                again.push_back(r);
+                break;
+            }
+        }
+    }
+    return again;
+}
+
+void stable_function::eval_many(const double* in, double* out, std::size_t n, double check_tol) const {
+    for (std::size_t r : eval_many_binary64(in, out, n, check_tol))
+        eval(in + r * n_inputs(), out + r * n_outputs());
+}
+
 std::vector<double> stable_function::operator()(const std::vector<double>& in) const {
     if (in.size() != n_inputs())
         throw type_error("stable_function: " + std::to_string(in.size()) + " inputs given, " +

@@ -96,6 +96,16 @@ public:
     precision_tier eval(const double* in, double* out) const;
     std::vector<double> operator()(const std::vector<double>& in) const;
 
+    /// Many points (n rows of n_inputs() values, row-major, as
+    /// compiled_function::eval_many) to a looser, proved accuracy: tier 1 at every
+    /// point, and the points where an output's bound exceeds check_tol times its
+    /// value (or two subnormal ulps) evaluated again by eval(). The first half,
+    /// eval_many_binary64, is reentrant (no GiNaC) and returns those points; eval_many
+    /// does both. The Python module's f(...) (docs/python.md) uses check_tol = 1e-6.
+    std::vector<std::size_t> eval_many_binary64(const double* in, double* out, std::size_t n,
+                                                double check_tol) const;
+    void eval_many(const double* in, double* out, std::size_t n, double check_tol) const;
+
     /// The double program with its running error bound only (tier 1): values
     /// and absolute error bounds of every output. For tests and charts.
     void eval_binary64(const double* in, double* value, double* bound) const;

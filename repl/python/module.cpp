@@ -364,16 +364,7 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, evaluation
         std::vector<std::size_t> again;
         {
             py::gil_scoped_release nogil;
-            std::vector<double> bound(m);
-            for (std::size_t r = 0; r < n; ++r) {
-                c.stable->eval_binary64(in.data() + r * k, o + r * m, bound.data());
-                for (std::size_t i = 0; i < m; ++i)
-                    if (!std::isfinite(o[r * m + i]) ||
-                        !(bound[i] <= plain_rel_tol * std::fabs(o[r * m + i]) || bound[i] <= 0x1p-1073)) {
-                        again.push_back(r);
-                        break;
-                    }
-            }
+            again = c.stable->eval_many_binary64(in.data(), o, n, plain_rel_tol);
         }
         for (std::size_t r : again) c.stable->eval(in.data() + r * k, o + r * m);
     }
