@@ -109,7 +109,15 @@ private:
         return abs(a.v) > one_ ? a.e + u_ * abs(a.v) : a.e;
     }
     bounded_value exp(const bounded_value& a) const {
-        const cln::cl_F v = cln::exp(a.v);
+        cln::cl_F v;
+        try {
+            v = cln::exp(a.v);
+        } catch (const cln::runtime_exception&) {
+            // beyond CLN's exponent range (exp(-1e300)): 0, within the least positive float
+            // (the error interval's upper end a + ea is as far out: ea < 1/2 below)
+            if (!cln::minusp(a.v + reduced_error(a))) throw;
+            return {zero_, cln::least_positive_float(f_)};
+        }
         return {v, abs(v) * expm1_bound(reduced_error(a)) + ferr_ * abs(v)};
     }
     bounded_value log(const bounded_value& a) const {
