@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "numeric/evaluator.h"
+#include "numeric/stable_evaluator.h"
 
 using namespace symrep;
 using namespace symrep::num;
@@ -252,4 +253,30 @@ TEST(NumericEvaluator, RealsymbolInputsAreNotSliced) {
     EXPECT_DOUBLE_EQ(f({2.0, 5.0})[0], 19.0);
     const GiNaC::possymbol p("p");
     EXPECT_DOUBLE_EQ(compile(ex(sqrt(p * p)), {p})({1.5})[0], 1.5);
+}
+
+TEST(NumericEvaluator, CheckedBatchFlagsAndRepairsCancellingPoints) {
+    // issue 27 1.3: the bare program is wrong in every digit where the closed form cancels
+    // ((1 - cos(w t))/w^2 at w t = 1e-9 gives 0 or noise); stable_function::eval_many proves
+    // each output to check_tol by the double tier's bound and evaluates the others again.
+    // Reference: 1/2 - (w t)^2/24 to 1e-16 relative for w t <= 1e-3.
+    const GiNaC::symbol w("w"), t("t");
+    const GiNaC::ex e = (1 - GiNaC::cos(w * t)) / GiNaC::pow(w, 2);
+    const symrep::num::compiled_function bare = symrep::num::compile(e, {w, t});
+    const symrep::num::stable_function checked(e, {w, t});
+    std::vector<double> in, plain(6), good(6);
+    for (double W : {1e-300, 1e-100, 1e-9, 1e-5, 1e-3, 0.5}) {
+        in.push_back(W);
+        in.push_back(1.0);
+    }
+    bare.eval_many(in.data(), plain.data(), 6);
+    const auto again = checked.eval_many_binary64(in.data(), good.data(), 6, 1e-6);
+    EXPECT_GE(again.size(), 3u);  // at least w = 1e-300, 1e-100, 1e-9 need more than double
+    checked.eval_many(in.data(), good.data(), 6, 1e-6);
+    for (int i = 0; i < 5; ++i) {
+        const double wt = in[2 * i];
+        EXPECT_NEAR(good[i], 0.5 - wt * wt / 24, 1e-6 * 0.5) << "w = " << wt;
+    }
+    EXPECT_NEAR(good[5], (1 - std::cos(0.5)) / 0.25, 1e-6);
+    EXPECT_GT(std::fabs(plain[2] - 0.5), 0.1);  // the bare program at w t = 1e-9: wrong
 }

@@ -38,6 +38,21 @@ using args_t = std::vector<value>;
 
 namespace {
 
+/// A denominator of e (the base of a negative power) that the values make 0, printed;
+/// "" when none is found. For eval's message at a singular point.
+std::string vanishing_denominator(const ex& e, const data_values& d) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::power>(*it)) continue;
+        const ex& k = it->op(1);
+        if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_negative()) continue;
+        try {
+            if (GiNaC::normal(put_values(it->op(0), d)).is_zero()) return print_ex(it->op(0));
+        } catch (const std::exception&) {
+        }
+    }
+    return "";
+}
+
 const char* const section = "Vectors and mechanics";
 
 void add(registry& r, std::string name, std::string sig, std::string summary, std::string eq, std::string example,
@@ -470,10 +485,12 @@ void register_mechanics_builtins(registry& r) {
         "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
         "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
         "number or a list of numbers (a time written as a decimal, 1e300, is that decimal number exactly). Returns a number or a list of components (a list of those for "
-        "several times). Where the values make the closed form singular (w = 0 in sin(|w| t)/|w|), "
-        "the exact limit is taken. Numbers in e and values are taken as the exact numbers they denote and the "
-        "result is evaluated with as many digits as it needs to be correct to double precision (no loss where "
-        "the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12, or at long phases). Integral objects "
+        "several times). Where values that are 0 make the closed form 0/0 (w = 0 in sin(|w| t)/|w|), "
+        "the exact limit is taken; at another singular point (a double root c^2 = 4 k, a resonance) eval "
+        "names the denominator that vanishes and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
+        "result is evaluated with as many digits as its proved error bound needs to be correct to double precision "
+        "(no loss where the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12 or 1e-300, or at long "
+        "phases; where 2560 digits do not suffice, an error says so). Integral objects "
         "(int_0^t f dtau, nested ones too) are evaluated by quadrature on Chebyshev panels, to a few ulps of their scale, "
         "refused with the error estimate where it does not converge (docs/numeric.md). e may be a solution by reduction s "
         "(VI.3) or its derivative s': r or r' at the times (t >= 0), numerically (Q by Magnus on SO(3)).",
@@ -529,13 +546,30 @@ void register_mechanics_builtins(registry& r) {
                         throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
                                            print_ex(tsym) + ": the values are constants (the expression is "
                                            "evaluated at " + print_ex(tsym) + " = T)");
+            // e at the values: where a value is 0 and e is 0/0 there, the limit (put_values_limit);
+            // at another singular point, the denominator that vanishes named and solve(P, values)
+            // proposed (it derives the solution of that scene: a double root, a resonance)
+            auto at = [&](const data_values& dv) -> value {
+                try {
+                    return numbers(put_values_limit(e, dv), b);
+                } catch (const std::exception& x) {
+                    if (std::string(x.what()).find("division by zero") == std::string::npos) throw;
+                    const std::string den = vanishing_denominator(e, dv);
+                    throw domain_error(b.name + ": the closed form is singular at these values" +
+                                       (den.empty() ? std::string(" (a division by zero)")
+                                                    : " (its denominator " + den + " is 0 there)") +
+                                       " and eval does not take this limit (it takes those where values that are 0 make "
+                                       "it 0/0, w = 0 in sin(|w| t)/|w|): solve the problem with these values, solve(P, values), which derives the "
+                                       "solution of this scene (a double root, a resonance), and eval that");
+                }
+            };
             try {
-                if (times.empty()) return numbers(put_values_limit(e, d), b);
+                if (times.empty()) return at(d);
                 list out;
                 for (const ex& T : times) {
                     data_values dt = d;
                     dt.scalars[tsym] = T;
-                    out.push_back(numbers(put_values_limit(e, dt), b));
+                    out.push_back(at(dt));
                 }
                 return times.size() == 1 ? out[0] : value(out);
             } catch (const type_error& x) {

@@ -88,7 +88,8 @@ ex put_values(const ex& e, const data_values& d) {
 }
 
 // Where the values make e singular (w = 0 in sin(|w| t)/|w|), its limit: each
-// zero value x becomes lambda x' (x' a fixed generic direction or 1) and the
+// zero value x becomes lambda x' (a vector: x' a fixed generic direction; a scalar:
+// lambda^2, so that sqrt(k) is lambda) and the
 // lambda^0 term of the series in lambda is taken (the exact limit lambda -> 0).
 ex put_values_limit(const ex& e, const data_values& d) {
     try {
@@ -103,8 +104,10 @@ ex put_values_limit(const ex& e, const data_values& d) {
             x = vector_literal(lambda * 3, lambda * 5, lambda * 7) / 7;
             any = true;
         }
+    // a scalar as lambda^2: the forms of a spring constant k = 0 have sqrt(k) (sqrt(k/m) t),
+    // a series in lambda then, not in sqrt(lambda) (which GiNaC's series does not expand)
     for (auto& [k, x] : dl.scalars)
-        if (GiNaC::normal(x).is_zero()) { x = lambda; any = true; }
+        if (GiNaC::normal(x).is_zero()) { x = GiNaC::pow(lambda, 2); any = true; }
     if (!any) return put_values(e, d);  // rethrows the original error
     const ex c = put_values(e, dl);
     auto lim = [&](const ex& x) {
@@ -140,7 +143,9 @@ double to_double(const ex& x, const builtin& b, const std::string& what) {
     try {
         return num::accurate_double(x);
     } catch (const domain_error& e) {
-        if (std::string(e.what()).rfind("integral:", 0) == 0) throw domain_error(b.name + ": " + e.what());
+        const std::string m = e.what();
+        if (m.rfind("integral:", 0) == 0 || m.rfind("cannot evaluate to double precision", 0) == 0)
+            throw domain_error(b.name + ": " + m);
         throw type_error(b.name + ": " + what + " does not evaluate to a real number: " +
                          message_text(GiNaC::evalf(x)) + " (give every symbol a value)");
     }

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "numeric/certified.h"
 #include "numeric/reference.h"
 
 namespace symrep::num {
@@ -293,6 +294,20 @@ private:
         return c;
     }
 
+    /// The double nearest the exact value of the symbol-free e, with a proved
+    /// error bound (numeric/certified.h): GiNaC's evalf at its 17 digits gives 0
+    /// for 1 - cos(1e-10). False where the bound does not apply (then evalf).
+    static bool accurate_constant(const GiNaC::ex& e, double& out) {
+        try {
+            const certified_result r = certified_double(e, 0x1p-60, 2560);
+            if (!r.proved) return false;
+            out = r.value;
+            return true;
+        } catch (const std::exception&) {
+            return false;
+        }
+    }
+
     static double real_value(const GiNaC::numeric& n, const GiNaC::ex& where) {
         if (!n.is_real())
             throw domain_error("cannot evaluate numerically: complex value " + bounded(where) +
@@ -317,6 +332,8 @@ private:
             throw type_error("cannot compile an equation or comparison: " + bounded(e));
         if (is_constant(e)) {
             // Subtrees without symbols are computed once, by GiNaC, at compile time.
+            double c;
+            if (accurate_constant(e, c)) return constant(c, e);
             ex v;
             try {
                 v = e.evalf();
@@ -405,13 +422,15 @@ private:
         }
         if (!cfactors.empty()) {
             ex v;
+            double c = 0;
+            const bool accurate = accurate_constant(cprod, c);
             try {
-                v = cprod.evalf();
+                v = accurate ? ex(c) : cprod.evalf();
             } catch (const std::exception&) {
                 v = cprod;
             }
             if (is_a<GiNaC::numeric>(v)) {
-                const double c = real_value(ex_to<GiNaC::numeric>(v), cprod);
+                if (!accurate) c = real_value(ex_to<GiNaC::numeric>(v), cprod);
                 if (c == -1.0) {
                     negate = true;
                 } else if (c != 1.0) {

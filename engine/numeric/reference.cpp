@@ -1,6 +1,7 @@
 // symrep/numeric/reference.cpp -- see reference.h.
 #include "numeric/reference.h"
 #include "numeric/quadrature.h"
+#include "numeric/certified.h"
 
 #include <cln/float.h>
 #include <cln/complex.h>
@@ -225,6 +226,18 @@ GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
 double accurate_double(const GiNaC::ex& e, int max_digits) {
     // integral objects by quadrature first (GiNaC's evalf of one is good to 1e-8 only)
     const GiNaC::ex x = exact_floats_of(integrals_as_numbers(e));
+    // with a proved error bound (numeric/certified.h): two precisions that agree prove
+    // nothing where the closed form cancels ((1 - cos(w))/w^2 is 0 at 40, 80, 160 digits
+    // for w = 1e-100)
+    try {
+        const certified_result r = certified_double(x, 0x1p-60, max_digits);
+        if (r.proved) return r.value;
+        throw domain_error("cannot evaluate to double precision: the closed form cancels more digits than " +
+                           std::to_string(max_digits) + " at these values (or is 0 without a proof of it)");
+    } catch (const not_certifiable&) {
+        // a complex intermediate value or a function without a bound here: increasing
+        // precisions until two agree, which a cancellation beyond them would fool
+    }
     cln::cl_R previous = 0;
     double result = 0;
     for (int digits = 30; digits <= std::max(30, max_digits); digits *= 2) {
@@ -242,42 +255,47 @@ double accurate_double(const GiNaC::ex& e, int max_digits) {
     return result;
 }
 
+GiNaC::ex value_at(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs, const std::vector<double>& point) {
+    if (point.size() != inputs.size())
+        throw type_error("reference: " + std::to_string(point.size()) + " values for " +
+                         std::to_string(inputs.size()) + " inputs");
+    GiNaC::exmap at;
+    for (std::size_t i = 0; i < inputs.size(); ++i) at[inputs[i]] = exact_rational(point[i]);
+    // floats made exact before the substitution, which would round float * input at once
+    const GiNaC::ex x = exact_floats_of(e);
+    try {
+        return x.subs(at, GiNaC::subs_options::no_pattern);
+    } catch (const error&) {
+        throw;
+    } catch (const std::exception&) {
+        // 0/0 at the point (w = 0 in 1/|w|^2 terms, a resonance w0 = nu in
+        // 1/(w0^2 - nu^2)): the value of the continuous extension, the limit
+        // along a generic line through the point, inputs -> point + lambda c.
+        const GiNaC::symbol lambda("lambda");
+        GiNaC::exmap line;
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+            line[inputs[i]] = exact_rational(point[i]) + lambda * GiNaC::numeric(int(2 * i + 3), int(i + 2));
+        try {
+            const GiNaC::ex near = x.subs(line, GiNaC::subs_options::no_pattern);
+            return GiNaC::series_to_poly(near.series(lambda == 0, 1)).subs(lambda == 0);
+        } catch (const error&) {
+            throw;
+        } catch (const std::exception& why) {
+            throw domain_error(std::string("reference: no value at this point (") + why.what() + ")");
+        }
+    }
+}
+
 std::vector<long double> reference_eval(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
                                         const std::vector<double>& point, int digits) {
     if (point.size() != inputs.size())
         throw type_error("reference: " + std::to_string(point.size()) + " values for " +
                          std::to_string(inputs.size()) + " inputs");
     if (digits < 20 || digits > 10000) throw domain_error("reference: digits must be in 20 .. 10000");
-    GiNaC::exmap at;
-    for (std::size_t i = 0; i < inputs.size(); ++i) at[inputs[i]] = exact_rational(point[i]);
     std::vector<long double> out;
     out.reserve(outputs.size());
     for (const GiNaC::ex& e : outputs) {
-        // floats made exact before the substitution, which would round float * input at once
-        const GiNaC::ex x = exact_floats_of(e);
-        GiNaC::ex at_point;
-        try {
-            at_point = x.subs(at, GiNaC::subs_options::no_pattern);
-        } catch (const error&) {
-            throw;
-        } catch (const std::exception&) {
-            // 0/0 at the point (w = 0 in 1/|w|^2 terms, a resonance w0 = nu in
-            // 1/(w0^2 - nu^2)): the value of the continuous extension, the limit
-            // along a generic line through the point, inputs -> point + lambda c.
-            const GiNaC::symbol lambda("lambda");
-            GiNaC::exmap line;
-            for (std::size_t i = 0; i < inputs.size(); ++i)
-                line[inputs[i]] = exact_rational(point[i]) + lambda * GiNaC::numeric(int(2 * i + 3), int(i + 2));
-            try {
-                const GiNaC::ex near = x.subs(line, GiNaC::subs_options::no_pattern);
-                at_point = GiNaC::series_to_poly(near.series(lambda == 0, 1)).subs(lambda == 0);
-            } catch (const error&) {
-                throw;
-            } catch (const std::exception& why) {
-                throw domain_error(std::string("reference: no value at this point (") + why.what() + ")");
-            }
-        }
-        const GiNaC::numeric v = evaluate_real(at_point, digits);
+        const GiNaC::numeric v = evaluate_real(value_at(e, inputs, point), digits);
         const cln::cl_R r = cln::the<cln::cl_R>(v.to_cl_N());
         out.push_back(to_long_double(r));
     }

@@ -56,11 +56,22 @@ GiNaC::ex decimal_floats_of(const GiNaC::ex& e);
 GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits);
 
 /// The double nearest the exact value of a symbol-free expression (its
-/// floats taken as exact): evaluated by CLN with 30, 60, 120 ... digits until
-/// two precisions agree to 2^-60 relative (Ziv). Immune to the cancellation
-/// and long phases that a fixed-precision evalf suffers ((1 - cos(x))/x^2 at
-/// x = 1e-12 is 0 with 20 digits). domain_error when it is not a real number.
+/// floats taken as exact): evaluated by CLN with 30, 60, 120 ... digits and a
+/// proved error bound (numeric/certified.h) until the bound is 2^-60 relative.
+/// Immune to the cancellation and long phases that a fixed-precision evalf
+/// suffers ((1 - cos(x))/x^2 is 0 with 20 digits at x = 1e-12, and with 160 at
+/// x = 1e-100). domain_error when it is not a real number, or when max_digits
+/// do not reach the bound (a cancellation of more digits, or a 0 that the
+/// bound cannot prove). Expressions the bound does not cover (complex
+/// intermediate values, functions other than sin cos tan exp log abs atan sinh
+/// cosh tanh) fall back to precisions raised until two agree to 2^-60.
 double accurate_double(const GiNaC::ex& e, int max_digits = 2560);
+
+/// e with inputs = point put in exactly (the doubles as the binary rationals
+/// they denote); where that is 0/0 (a removable singularity), the value of the
+/// continuous extension: the limit along a line through the point, as below.
+/// A pole gives domain_error.
+GiNaC::ex value_at(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs, const std::vector<double>& point);
 
 /// outputs evaluated at inputs = point (point.size() == inputs.size()) with
 /// `digits` significant decimal digits, rounded to long double at the end.

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "numeric/certified.h"
 #include "numeric/reference.h"
 
 namespace symrep::num {
@@ -35,6 +36,7 @@ template <>
 struct arith<double> {
     static constexpr double u = 0x1p-53;
     static constexpr double f_err = 0x1p-52;  // glibc: < 1 ulp for these functions
+    static constexpr double min_normal = 0x1p-1022, eta = 0x1p-1074;  // below min_normal: eta absolute
     static double abs(double x) { return std::fabs(x); }
     static double sqrt(double x) { return std::sqrt(x); }
     static double exp(double x) { return std::exp(x); }
@@ -63,6 +65,7 @@ struct arith<__float128> {
     using q = __float128;
     static constexpr q u = 0x1p-113;
     static constexpr q f_err = 0x1p-110;  // libquadmath: a few ulp
+    static inline const q min_normal = ldexpq(1, -16382), eta = ldexpq(1, -16494);
     static q abs(q x) { return fabsq(x); }
     static q sqrt(q x) { return sqrtq(x); }
     static q exp(q x) { return expq(x); }
@@ -128,16 +131,18 @@ constant_split split_constant(double c, const GiNaC::ex& source, bool known) {
     const double unknown64 = std::fabs(c) * 0x1p-52;
     if (!known) return {unknown64, __float128(c), __float128(unknown64), 0.0, unknown64};
     try {
-        const cln::cl_R r = cln::the<cln::cl_R>(evaluate_real(source, 60).to_cl_N());
-        const cln::cl_RA c_exact = cln::rational(cln::cl_DF(c));
-        const double hi = c, lo = cln::double_approx(r - c_exact);
+        // exact - c to 2^-70 relative with a proved bound (numeric/certified.h): a
+        // constant that cancels (1 - cos(1e-30)) is not 0 at 60 digits, as GiNaC's evalf has it
+        const certified_result rest = certified_double(source - exact_rational(c), 0x1p-70, 2560);
+        if (!rest.proved) {
+            const double inf = std::numeric_limits<double>::infinity();
+            return {inf, __float128(c), __float128(inf), 0.0, inf};
+        }
+        const double hi = c, lo = rest.value;
         const __float128 q = __float128(hi) + __float128(lo);
-        // the exact errors, rounded up a little (60 digits are ~1e-60 relative)
-        const double e64 = std::fabs(cln::double_approx(r - c_exact)) * (1 + 1e-12);
-        const double e128 =
-            std::fabs(cln::double_approx(r - c_exact - cln::rational(cln::cl_DF(lo)))) * (1 + 1e-12) +
-            std::fabs(c) * 1e-55;
-        // q = hi + lo needs no rounding when lo is below hi's last bit by < 60 bits
+        // |exact - c - lo| <= rest's bound + the rounding of lo to double
+        const double e128 = (rest.bound + std::fabs(lo) * 0x1p-52) * (1 + 1e-12) + std::fabs(c) * 1e-55;
+        const double e64 = std::fabs(lo) * (1 + 1e-12) + e128;
         return {e64, q, __float128(e128) + arith<__float128>::u * fabsq(q), lo, e128};
     } catch (const std::exception&) {
         return {unknown64, __float128(c), __float128(unknown64), 0.0, unknown64};
@@ -350,6 +355,12 @@ void stable_function::run(const T* constants, const T* constant_bounds, const do
                 break;
             }
         }
+        // Underflow: below the smallest normal number a rounding is eta (half a subnormal ulp,
+        // rounded up), not u |v|: w^2 = 0 at w = 1e-170 is no exact 0. Sums are exact there,
+        // and an exact 0 operand gives an exact 0 (sin 0, 0 * x).
+        if (A::abs(v) < A::min_normal && ins.op != opcode::add && ins.op != opcode::sub &&
+            ins.op != opcode::neg && ins.op != opcode::abs && a != 0 && (ins.op != opcode::mul || b != 0))
+            e += A::eta;
         value[ins.dst] = v;
         bound[ins.dst] = A::finite(e) ? e : inf;
     }
@@ -367,12 +378,16 @@ void stable_function::run_phase(const instruction& ins, const phase_operands& ph
     const double x = in[ph.input], hi = program_.constants_[k], lo = constant_lo64_[k];
     const double p = hi * x;
     const double d = std::fma(hi, x, -p) + lo * x;
-    const double phase_bound = std::fabs(x) * constant_bound_dd_[k] + A::u * std::fabs(d) * 2 + 0.5 * d * d;
+    const double phase_bound = std::fabs(x) * constant_bound_dd_[k] + A::u * std::fabs(d) * 2;
     const double s = std::sin(p), c = std::cos(p);
     const double sv = s + d * c, cv = c - d * s;
+    // The first-order correction leaves |sin(p + d) - (s + d c)| <= d^2/2 + |d|^3/6: an error
+    // of the value, whatever the derivative at the point (added as such, not as a phase error
+    // scaled by |cos|, which vanishes where sin peaks).
+    const double second_order = (0.5 * d * d + std::fabs(d * d * d) / 6) * (1 + 4 * A::u);
     auto b = [&](double v, double deriv) {
-        return min(1.0, deriv + phase_bound) * phase_bound + A::f_err * (std::fabs(s) + std::fabs(c)) +
-               2 * A::u * std::fabs(v);
+        return min(1.0, deriv + phase_bound) * phase_bound + second_order +
+               A::f_err * (std::fabs(s) + std::fabs(c)) * (1 + std::fabs(d)) + 2 * A::u * std::fabs(v);
     };
     switch (ins.op) {
         case opcode::sin:
@@ -412,15 +427,21 @@ void stable_function::eval_binary128(const double* in, double* value, double* bo
     for (std::size_t i = 0; i < program_.outputs_.size(); ++i) {
         const __float128 v = r[program_.outputs_[i]];
         value[i] = static_cast<double>(v);
-        // plus the rounding to double
-        bound[i] = static_cast<double>(e[program_.outputs_[i]]) + std::fabs(value[i]) * 0x1p-53;
+        // plus the rounding to double (eta where it underflows), rounded up
+        const __float128 eq = e[program_.outputs_[i]];
+        bound[i] = static_cast<double>(eq) * (1 + 0x1p-52) + std::fabs(value[i]) * 0x1p-53 +
+                   (std::fabs(value[i]) < 0x1p-1022 && (v != 0 || eq != 0) ? 0x1p-1074 : 0.0);
     }
 }
 
 precision_tier stable_function::eval(const double* in, double* out) const {
     const std::size_t m = program_.outputs_.size();
     auto accepted = [&](double v, double b) {
-        return b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol;
+        // an infinite value is no answer of a tier (inf <= rel_tol * inf): 1/|w|^4 overflows
+        // at |w| = 1e-300 in a form whose value is finite
+        // (or within two subnormal ulps: the double is then right to the last bit doubles have there)
+        return std::isfinite(v) &&
+               (b <= options_.rel_tol * std::fabs(v) || b <= options_.abs_tol || b <= 0x1p-1073);
     };
     thread_local std::vector<double> b;
     b.resize(m);
@@ -435,19 +456,37 @@ precision_tier stable_function::eval(const double* in, double* out) const {
         if (!accepted(out[i], b[i])) pending.push_back(i);  // NaN and inf too: 0/0 may have a limit
     if (pending.empty()) return precision_tier::binary128;
 
-    // Tier 3: CLN at the exact binary inputs, doubling the digits until two
-    // successive values agree (Ziv). A value that is exactly zero at two
-    // successive precisions of 160 digits or more is taken as zero. An output
-    // without a real value (log of a negative number, a pole) keeps binary128's
+    // Tier 3: CLN at the exact binary inputs with a proved error bound
+    // (numeric/certified.h), the precision doubled until the bound is rel_tol / 4
+    // relative. (Two precisions that agree prove nothing: both lose every digit of
+    // (1 - cos(w t))/w^2 at w = 1e-100 up to 160 digits.) At a removable
+    // singularity (0/0 at the point) the limit (numeric/reference.h, value_at).
+    // An output that max_digits do not bound is NaN: not known, never a guess.
+    // One without a real value (log of a negative number, a pole) keeps binary128's
     // NaN or infinity.
     const std::vector<double> point(in, in + program_.n_inputs_);
     for (std::size_t i : pending) {
-        const std::vector<GiNaC::ex> one{outputs_[i]};
+        GiNaC::ex at;
+        try {
+            at = value_at(outputs_[i], inputs_, point);
+        } catch (const domain_error&) {
+            continue;
+        }
+        try {
+            const certified_result r = certified_double(at, options_.rel_tol * 0.25, options_.max_digits);
+            out[i] = r.proved ? r.value : std::numeric_limits<double>::quiet_NaN();
+            continue;
+        } catch (const domain_error&) {
+            continue;
+        } catch (const not_certifiable&) {
+        }
+        // not covered by the bound (a complex intermediate value, another function):
+        // precisions raised until two agree, none below 160 digits for a 0
         long double previous = 0;
         for (int digits = 40; digits <= options_.max_digits; digits *= 2) {
             long double now;
             try {
-                now = reference_eval(one, inputs_, point, digits)[0];
+                now = reference_eval({at}, {}, {}, digits)[0];
             } catch (const domain_error&) {
                 break;
             }
@@ -460,6 +499,29 @@ precision_tier stable_function::eval(const double* in, double* out) const {
         }
     }
     return precision_tier::multiprecision;
+}
+
+std::vector<std::size_t> stable_function::eval_many_binary64(const double* in, double* out, std::size_t n,
+                                                             double check_tol) const {
+    const std::size_t k = n_inputs(), m = n_outputs();
+    std::vector<double> bound(m);
+    std::vector<std::size_t> again;
+    for (std::size_t r = 0; r < n; ++r) {
+        eval_binary64(in + r * k, out + r * m, bound.data());
+        for (std::size_t i = 0; i < m; ++i) {
+            const double v = out[r * m + i];
+            if (!std::isfinite(v) || !(bound[i] <= check_tol * std::fabs(v) || bound[i] <= 0x1p-1073)) {
+                again.push_back(r);
+                break;
+            }
+        }
+    }
+    return again;
+}
+
+void stable_function::eval_many(const double* in, double* out, std::size_t n, double check_tol) const {
+    for (std::size_t r : eval_many_binary64(in, out, n, check_tol))
+        eval(in + r * n_inputs(), out + r * n_outputs());
 }
 
 std::vector<double> stable_function::operator()(const std::vector<double>& in) const {

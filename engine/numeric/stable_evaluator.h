@@ -25,8 +25,14 @@
 //      their exact values; phases such as w0 t are then formed with an error
 //      of 1e-34 relative, and cancellations of up to about 1e16 are absorbed.
 //   3. multiprecision: the outputs that still fail are evaluated by CLN at the
-//      exact binary inputs (numeric/reference.h) with 40, 80, 160 ... decimal
-//      digits until two successive precisions agree to rel_tol.
+//      exact binary inputs with a proved error bound (numeric/certified.h),
+//      the digits doubled until the bound is rel_tol / 4 relative (two
+//      precisions that agree prove nothing: both can lose every digit to a
+//      cancellation). An output that max_digits do not bound is NaN.
+//
+//   In tiers 1 and 2 an output is accepted only when it is finite; below the
+//   smallest normal number each rounding is bounded by half a subnormal ulp
+//   (underflow is no exact 0).
 //
 // So the result is the exact value of the closed form at the given doubles,
 // correctly rounded up to a small multiple of rel_tol, at the cost of the
@@ -89,6 +95,16 @@ public:
     /// Evaluate at one point; returns the highest tier any output needed.
     precision_tier eval(const double* in, double* out) const;
     std::vector<double> operator()(const std::vector<double>& in) const;
+
+    /// Many points (n rows of n_inputs() values, row-major, as
+    /// compiled_function::eval_many) to a looser, proved accuracy: tier 1 at every
+    /// point, and the points where an output's bound exceeds check_tol times its
+    /// value (or two subnormal ulps) evaluated again by eval(). The first half,
+    /// eval_many_binary64, is reentrant (no GiNaC) and returns those points; eval_many
+    /// does both. The Python module's f(...) (docs/python.md) uses check_tol = 1e-6.
+    std::vector<std::size_t> eval_many_binary64(const double* in, double* out, std::size_t n,
+                                                double check_tol) const;
+    void eval_many(const double* in, double* out, std::size_t n, double check_tol) const;
 
     /// The double program with its running error bound only (tier 1): values
     /// and absolute error bounds of every output. For tests and charts.

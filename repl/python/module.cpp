@@ -18,7 +18,9 @@
 #include <pybind11/stl.h>
 
 #include <csignal>
+#include <cmath>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -185,6 +187,25 @@ struct compiled {
     std::string text;
 };
 
+// A value for name: the closed form (or another value) must have the symbol.
+void check_value_name(const GiNaC::ex& name, const std::vector<GiNaC::ex>& forms, const lang::data_values& d) {
+    for (const GiNaC::ex& f : forms)
+        if (f.has(name)) return;
+    for (const auto& [k, x] : d.scalars)
+        if (!k.is_equal(name) && x.has(name)) return;
+    for (const auto& [k, x] : d.vectors)
+        if (!k.is_equal(name) && x.has(name)) return;
+    std::set<std::string> names;
+    for (const GiNaC::ex& f : forms)
+        for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it)) names.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw symrep::type_error("compile: a value is given for '" + num::symbol_name(name) +
+                             "', which the closed form does not have (its symbols: " +
+                             (list.empty() ? std::string("none") : list) + ")");
+}
+
 compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::string>& inputs,
                  const py::object& values, bool stable) {
     // an expression (a scalar, a vector: its components) or a list of them (flattened)
@@ -216,7 +237,10 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
             const lang::value vl = st->s.evaluate(list + "]");
             lang::builtin b;
             b.name = "compile";
-            d = lang::read_values(vl, b, 1);
+            // floats taken as the exact doubles they are: GiNaC would otherwise fold w . w,
+            // |w|^2 - w_y^2 ... in double precision as the values go in (a cancellation the
+            // compiled program, the stable one too, would then take for exact)
+            d = lang::exact_values(lang::read_values(vl, b, 1));
         }
         std::vector<GiNaC::ex> in;
         for (const std::string& name : inputs) {
@@ -237,11 +261,29 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
                 c.widths.push_back(1);
             }
         }
+        // a value for a name that the closed form does not have is a typo, not a no-op
+        for (const auto& [k, x] : d.scalars) check_value_name(k, forms, d);
+        for (const auto& [k, x] : d.vectors) check_value_name(k, forms, d);
         std::vector<GiNaC::ex> outs;
-        for (const GiNaC::ex& form : forms)
-            for (const GiNaC::ex& x : lang::components(lang::put_values(form, d))) outs.push_back(x);
+        for (const GiNaC::ex& form : forms) {
+            GiNaC::ex put;
+            try {
+                // where the values make the closed form singular (w = 0 in sin(|w| t)/|w|): the limit
+                put = lang::put_values_limit(form, d);
+            } catch (const symrep::error&) {
+                throw;
+            } catch (const std::exception&) {
+                throw symrep::domain_error(
+                    "compile: the closed form is singular at these values (a division by zero) and its limit "
+                    "there could not be taken; solve the problem for these values, solve(P, values), and "
+                    "compile that solution");
+            }
+            for (const GiNaC::ex& x : lang::components(put)) outs.push_back(x);
+        }
         c.f = num::compile(outs, in);
-        if (stable) c.stable = std::make_shared<num::stable_function>(outs, in);
+        // always: the plain path checks its points with the stable evaluator's double tier
+        (void)stable;
+        c.stable = std::make_shared<num::stable_function>(outs, in);
         c.n_outputs = outs.size();
         c.text = lang::print_value(e.v);
     } catch (const std::exception& ex) {
@@ -253,7 +295,13 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
 
 // f(**arrays): every input a scalar or an array of n values (vectors: n x 3 or 3); the result
 // n x n_outputs (n_outputs == 1: a vector of n values).
-py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, bool stable) {
+// How f(...) evaluates: checked (the default), the stable evaluator, or the bare double program.
+enum class evaluation { checked, stable, unchecked };
+
+// The accuracy the checked path proves for every output (relative to its value); docs/python.md.
+constexpr double plain_rel_tol = 1e-6;
+
+py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, evaluation mode) {
     const std::size_t k = c.inputs.size();
     std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>> cols;
     std::size_t n = 1;
@@ -302,13 +350,23 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, bool stabl
     py::array_t<double> out = m == 1 ? py::array_t<double>(std::vector<py::ssize_t>{py::ssize_t(n)})
                                      : py::array_t<double>(std::vector<py::ssize_t>{py::ssize_t(n), py::ssize_t(m)});
     double* o = out.mutable_data();
-    if (stable) {
+    if (mode == evaluation::stable) {
         // its exact tier uses GiNaC: the GIL stays held
         for (std::size_t r = 0; r < n; ++r) c.stable->eval(in.data() + r * k, o + r * m);
-    } else {
+    } else if (mode == evaluation::unchecked) {
         // doubles only, an immutable program (thread safe): other Python threads run meanwhile
         py::gil_scoped_release nogil;
         c.f.eval_many(in.data(), o, n);
+    } else {
+        // checked: the double program with its running error bound (the stable evaluator's
+        // first tier, reentrant: the GIL released); a point where an output's bound exceeds
+        // plain_rel_tol of its value is evaluated again by the stable evaluator (GIL held)
+        std::vector<std::size_t> again;
+        {
+            py::gil_scoped_release nogil;
+            again = c.stable->eval_many_binary64(in.data(), o, n, plain_rel_tol);
+        }
+        for (std::size_t r : again) c.stable->eval(in.data() + r * k, o + r * m);
     }
     return out;
 }
@@ -522,17 +580,19 @@ PYBIND11_MODULE(_symrep, m) {
         .def_property_readonly("expression", [](const compiled& c) { return c.text; })
         .def("listing", [](const compiled& c) { return c.f.listing(); })
         .def(
-            "__call__", [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, false); },
-            "f(t=array, ...): the values at every point, n x n_outputs (n for one output).")
+            "__call__", [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, evaluation::checked); },
+            "f(t=array, ...): the values at every point, n x n_outputs (n for one output), each output "
+            "proved correct to 1e-6 relative by the double program's running error bound; points where "
+            "the bound does not prove it are evaluated by the stable evaluator.")
         .def(
-            "stable",
-            [](const compiled& c, const py::kwargs& kw) {
-                if (!c.stable)
-                    throw symrep::type_error("compiled without stable=True: no stable evaluator");
-                return evaluate(c, kw, true);
-            },
+            "stable", [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, evaluation::stable); },
             "The stable evaluator (numeric/stable_evaluator.h: error bounds, binary128 and exact "
-            "tiers where double cancels), point by point.");
+            "tiers where double cancels), point by point: every output to 1e-14 relative.")
+        .def(
+            "unchecked",
+            [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, evaluation::unchecked); },
+            "The bare double program (eval_many), fastest, with no accuracy check: where the closed "
+            "form cancels, its values can be wrong in every digit.");
 
     py::register_exception_translator([](std::exception_ptr p) {
         try {
