@@ -462,7 +462,10 @@ std::optional<GiNaC::ex> sum_of_fractions(const GiNaC::ex& x) {
 
 std::string message_text(const GiNaC::ex& e, std::size_t max) {
     std::ostringstream os;
-    os << e;
+    // the constant as the language writes it (GiNaC prints Pi, which reads back as a free symbol)
+    static const GiNaC::symbol pi("pi");
+    if (e.has(GiNaC::Pi)) os << e.subs(GiNaC::Pi == pi, GiNaC::subs_options::no_pattern);
+    else os << e;
     std::string s = os.str();
     if (s.size() > max)
         s = s.substr(0, max / 2) + " ... " + s.substr(s.size() - max / 4) + " (" +
