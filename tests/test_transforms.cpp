@@ -74,6 +74,8 @@ TEST(Transforms, InverseLaplaceOfCubicFactors) {
         EXPECT_LT(GiNaC::abs(at(f5, 2) - ref("0.658917891378978768867635112978")), tol) << F;
         EXPECT_LT(GiNaC::abs(at(f5, 3) - ref("3.15970878574520285465200907045")), tol) << F;
     }
+    // a repeated cubic factor: refused at once (Hermite on Cardano's radicals does not finish)
+    EXPECT_THROW(inverse_laplace(1 / GiNaC::pow(GiNaC::pow(s, 3) - s * s + 1, 2), s, t), closed_form_error);
     // irreducible of degree 5: refused, naming the degree, with a short message
     try {
         inverse_laplace(1 / (GiNaC::pow(s, 5) - s - 1), s, t);

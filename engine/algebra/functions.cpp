@@ -94,6 +94,15 @@ coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const 
         cubic = cubic || r.factor.degree(X) == 3;
         simple = simple && r.multiplicity == 1;
     }
+    if (cubic && !simple) {
+        // Hermite's conditions on Cardano's radicals: a linear system that does not finish in
+        // minutes; refused at once
+        for (const root& r : roots)
+            if (r.factor.degree(X) == 3 && r.multiplicity > 1)
+                throw closed_form_error(where + ": the cubic factor " + str(r.factor) + " of the minimal polynomial " +
+                                        "is repeated (multiplicity " + std::to_string(r.multiplicity) +
+                                        "); Hermite interpolation on Cardano's radicals is not done here");
+    }
     if (cubic && simple) {
         // (II.1.12) with simple roots, Lagrange's form: p(X) = sum_z f(z) (q(X)/(X - z))/q'(z),
         // a pair a +- i b once as 2 Re. Each term stays as small as its root (Cardano's

@@ -174,6 +174,11 @@ ex inverse_laplace(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) 
                                     " of degree " + std::to_string(d) +
                                     " over the rationals; its roots have no closed form here (only factors of "
                                     "degree 1, 2 and 3 are solved: Cardano for 3)");
+        if (d == 3 && g.multiplicity > 1)
+            throw closed_form_error("inverse_laplace: the denominator has the cubic factor " +
+                                    signals::polynomial_text(g.f, s) + " repeated (multiplicity " +
+                                    std::to_string(g.multiplicity) +
+                                    "); Cardano's roots are used for simple cubic factors only");
         cubic = cubic || d == 3;
     }
     const ex f = inverse_raw(r, s, t);
