@@ -7,6 +7,8 @@
 #include "algebra/element.h"
 #include "algebra/polynomial_algebra.h"
 #include "algebra/polynomial_structure.h"
+#include "scalar/equality.h"
+#include "scalar/polynomial_roots.h"
 #include "scalar/scalar.h"
 #include "gen_tables.h"
 #include "core/error.h"
@@ -327,4 +329,39 @@ TEST(Scalar, ExponentialIdentitiesAreZero) {
     EXPECT_FALSE(is_zero_scalar(exp(x) - exp(y)));
     EXPECT_FALSE(is_zero_scalar(exp(x) * exp(y) - exp(x - y)));
     EXPECT_FALSE(is_zero_scalar(exp(x + y) - exp(x) - exp(y)));
+}
+
+// scalar/polynomial_roots.h, the one home of the quadratic formula and of Cardano's form:
+// every root of the factors of degree 1, 2 and 3 is a root (|p(r)| < 1e-40 at 60 digits, an
+// independent evaluation of the closed forms), the multiplicities add up to the degree, the
+// square root of a pair carries no sign (sqrt(4 b^2) = 2 b), and a factor of degree 5 is refused
+// naming its degree.
+TEST(PolynomialRoots, RadicalsOfTheRationalFactors) {
+    const GiNaC::symbol X("X");
+    const GiNaC::realsymbol b("b");
+    for (const GiNaC::ex& p : {GiNaC::ex(GiNaC::pow(X, 5) + X + 1), GiNaC::ex(GiNaC::pow(X, 3) - 3 * X + 1),
+                               GiNaC::ex(GiNaC::pow(X - 2, 2) * (GiNaC::pow(X, 3) - 2)),
+                               GiNaC::ex(X * X + GiNaC::pow(GiNaC::Pi, 2))}) {
+        const auto roots = roots_in_radicals(p, X, "test");
+        unsigned count = 0;
+        for (const auto& r : roots) {
+            count += r.multiplicity * (r.im.is_zero() ? 1 : 2);
+            GiNaC::numeric v;
+            ASSERT_TRUE(evaluate_numeric(GiNaC::expand(p).subs(X == r.re + GiNaC::I * r.im), 60, v)) << p;
+            EXPECT_LT(GiNaC::abs(v), GiNaC::numeric(1) / GiNaC::pow(GiNaC::numeric(10), 40)) << p << ": " << r.re;
+        }
+        EXPECT_EQ(count, unsigned(GiNaC::expand(p).degree(X))) << p;
+    }
+    // a real b of either sign: the pair a +- i b, never sqrt(b^2)
+    const auto pair = roots_in_radicals(X * X - 2 * X + 1 + b * b, X, "test");
+    ASSERT_EQ(pair.size(), 1u);
+    EXPECT_TRUE(is_zero_scalar(pair[0].re - 1));
+    EXPECT_TRUE(is_zero_scalar(pair[0].im - b) || is_zero_scalar(pair[0].im + b)) << pair[0].im;
+    EXPECT_TRUE(is_zero_scalar(sign_free_sqrt(4 * b * b) - 2 * b));
+    try {
+        roots_in_radicals(GiNaC::pow(X, 5) - X - 1, X, "test");
+        ADD_FAILURE() << "no error";
+    } catch (const closed_form_error& e) {
+        EXPECT_NE(std::string(e.what()).find("degree 5"), std::string::npos) << e.what();
+    }
 }

@@ -21,6 +21,15 @@ const GiNaC::possymbol w("w");  // positive: sqrt(w^2) = w
 
 bool same(const ex& a, const ex& b) { return is_zero_scalar(tidy(GiNaC::expand(a - b))); }
 
+// a reference value parsed with 50 digits (a numeric read from a string has the current Digits)
+GiNaC::numeric ref(const char* text) {
+    const long saved = GiNaC::Digits;
+    GiNaC::Digits = 50;
+    const GiNaC::numeric x(text);
+    GiNaC::Digits = saved;
+    return x;
+}
+
 }  // namespace
 
 // P_3, p = (X + 1)(X + 2)(X + 3): Psi^-1(v^j) = g^(j), g the impulse response
@@ -143,9 +152,63 @@ TEST(Signals, SamplingAndAliasing) {
     const sampling g = sample(polynomial_representation(X * X + w * w, X), h, l);
     EXPECT_EQ(g.aliasing, truth::no);
     EXPECT_NE(g.report.find("nonzero integer"), std::string::npos) << g.report;
-    // roots not in radicals: not decided, never guessed
-    EXPECT_EQ(sample(polynomial_representation(GiNaC::pow(X, 3) - 2, X), 1, l).aliasing, truth::unknown);
+    // a cubic factor: its roots by Cardano (2^(1/3) and a pair whose imaginary parts differ by
+    // 3^(1/2) 2^(1/3), not a multiple of 2 pi): decided
+    EXPECT_EQ(sample(polynomial_representation(GiNaC::pow(X, 3) - 2, X), 1, l).aliasing, truth::no);
     EXPECT_THROW(sample(R, 0, l), domain_error);
+}
+
+// q(l) of a cubic p from Cardano's roots, exactly (the characteristic polynomial of the
+// radical matrix exp(h [d]) was refused by the size guard). Against mpmath's prod (l - e^(h r))
+// over mp.polyroots at 50 digits, printed to 30: coefficients to 1e-25 at 40 digits.
+TEST(Signals, SamplingACubicByItsRoots) {
+    const auto R = polynomial_representation(GiNaC::pow(X, 3) - 2 * X * X - ex(8) / 3 * X + 2, X);
+    const sampling sp = sample(R, ex(3) / 4, l);
+    EXPECT_FALSE(sp.numeric);
+    const char* expected[] = {"-4.48168907033806482260205546012", "15.2523201452284160752138871989",
+                              "-9.56068692569413049076488665575"};
+    const ex q = sp.q.expand();
+    for (int k = 0; k < 3; ++k) {
+        GiNaC::numeric v;
+        ASSERT_TRUE(evaluate_numeric(q.coeff(l, k), 40, v)) << q;
+        EXPECT_LT(GiNaC::abs(v - ref(expected[k])), GiNaC::numeric("1e-25")) << k;
+    }
+    EXPECT_TRUE(is_zero_scalar(q.coeff(l, 3) - 1));
+    EXPECT_EQ(sp.aliasing, truth::no) << sp.report;
+}
+
+// A quintic without roots in radicals: q(l) numeric, marked as such, with its error bound.
+// Against mpmath (as above): X^5 - X - 1 at step 1/2.
+TEST(Signals, SamplingANumericQuintic) {
+    const auto R = polynomial_representation(GiNaC::pow(X, 5) - X - 1, X);
+    const sampling sp = sample(R, ex(1) / 2, l);
+    EXPECT_TRUE(sp.numeric);
+    EXPECT_NE(sp.report.find("numeric"), std::string::npos) << sp.report;
+    EXPECT_NE(sp.report.find("degree 5"), std::string::npos) << sp.report;
+    GiNaC::numeric bound;
+    ASSERT_TRUE(evaluate_numeric(sp.error_bound, 20, bound));
+    EXPECT_GT(bound, 0);
+    EXPECT_LT(bound, GiNaC::numeric("1e-25"));
+    const char* expected[] = {"-1.0", "5.00911492376490054007490396266", "-9.98307826521821899334175845106",
+                              "9.95443524137261029568555638795", "-5.01171918731327752411966978102"};
+    for (int k = 0; k < 5; ++k) {
+        GiNaC::numeric v;
+        ASSERT_TRUE(evaluate_numeric(sp.q.coeff(l, k), 40, v));
+        // the reference's 30 printed digits, and the bound claimed
+        EXPECT_LT(GiNaC::abs(v - ref(expected[k])), GiNaC::numeric("1e-28") + bound) << k;
+    }
+    EXPECT_EQ(sp.aliasing, truth::no) << sp.report;
+    // the shift's samples agree with the signal's: f(k h) = lambda(w exp(h d)^k), the impulse
+    // response at t = 1 against mpmath's residue sum at 40 digits
+    representation Rh = R;
+    Rh.d = sp.shift;
+    const coeffs u{ex(1), ex(0), ex(0), ex(0), ex(0)};
+    const auto seq = sequence_of(Rh, u, 0, 3);
+    GiNaC::numeric v;
+    ASSERT_TRUE(evaluate_numeric(seq[2], 30, v));
+    EXPECT_LT(GiNaC::abs(v - ref("0.0416942264062746801150422530196")), GiNaC::numeric("1e-25"));
+    // a symbolic step: the numeric form is refused
+    EXPECT_THROW(sample(R, h, l), domain_error);
 }
 
 // Products of signals (signals/product.h): Psi(f g) = Psi(f) (x) Psi(g) on A (x) B with

@@ -9,6 +9,7 @@
 #include "algebra/polynomial_structure.h"
 #include "algebra/structure_algebra.h"
 #include "lang/builtins.h"
+#include "numeric/reference.h"
 
 namespace symrep::lang {
 
@@ -90,10 +91,13 @@ void register_polynomial_builtins(registry& r) {
 
     add(r, {"polynomial_algebra", "polynomial_algebra(p, X)",
            "The polynomial algebra P_n = R[X]/(p) for a monic polynomial p of degree n >= 1 (rational "
-           "or symbolic coefficients), with the cyclic basis 1, v, ..., v^(n-1) and p(v) = 0.",
+           "or symbolic coefficients; a float is read as the exact binary rational it denotes), with the cyclic "
+           "basis 1, v, ..., v^(n-1) and p(v) = 0.",
            "(II.1 completion of Thm II.1.2)", "polynomial_algebra(X^3 - 2*X + 1, X)", section, 2, 2, {}},
            [](const std::vector<value>& args, context&, const builtin& b) -> value {
-               const GiNaC::ex& p = arg_ex(args, 0, b);
+               // a float is the exact binary rational it denotes (as in the numeric layer): factor()
+               // and gcd() work over the rationals
+               const GiNaC::ex p = num::exact_floats_of(arg_ex(args, 0, b));
                const GiNaC::symbol& X = arg_symbol(args, 1, b);
                return algebra_ptr(polynomial_algebra::make(p, X));
            });

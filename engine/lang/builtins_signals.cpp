@@ -137,8 +137,10 @@ void register_signals_builtins(registry& r) {
         "a polynomial algebra its generator v): [exp(h d), q(l), report]. The samples f(k h) of the signal "
         "Psi^-1(w) are the discrete signal of the same w with the shift exp(h d); q(l) = det(l I - exp(h [d])) "
         "is their characteristic polynomial. The report says whether the samples alias (two roots r, s of p "
-        "with e^(h r) = e^(h s): they then span fewer dimensions than q's degree).",
-        "Thm II.3.4, Cor. II.3.5 (II.3.26-32)", "sampling(find_generator(polynomial_algebra(X^2 + Pi^2, X)), 1, l)",
+        "with e^(h r) = e^(h s): they then span fewer dimensions than q's degree). q comes from the roots of p's "
+        "rational factors (degree <= 3, Cardano for 3); with a factor of higher degree and numbers for p and h, "
+        "exp(h d) and q are numeric (30 digits), marked as such in the report with a bound on q's coefficients.",
+        "Thm II.3.4, Cor. II.3.5 (II.3.26-32)", "sampling(find_generator(polynomial_algebra(X^2 + pi^2, X)), 1, l)",
         3, 3, [](const builtin& b, const std::vector<value>& a, context&) -> value {
             const element& d = arg_element(a, 0, b);
             const GiNaC::ex& h = arg_ex(a, 1, b);

@@ -32,8 +32,10 @@ void register_transforms_builtins(registry& r) {
     add_builtin(
         r, section, "inverse_laplace", "inverse_laplace(F, s, t)",
         "The causal signal f(t) whose Laplace transform is the proper rational function F(s): f = Psi^-1(q(v)) on "
-        "the polynomial algebra of F's denominator p (F = q/p, p monic). Checked by laplace(f, t, s) = F. An improper "
-        "F (a polynomial part: derivatives of the Dirac delta) or a non-rational F is refused.",
+        "the polynomial algebra of F's denominator p (F = q/p, p monic). Checked by laplace(f, t, s) = F. The roots of "
+        "p come from its rational factors of degree 1, 2 and 3 (Cardano; then the check is numeric, at 50 digits); a "
+        "factor of degree 4 or more is refused, naming its degree. An improper F (a polynomial part: derivatives of "
+        "the Dirac delta) or a non-rational F is refused.",
         "(V.1.4), Thm II.1.1", "inverse_laplace(1/(s^2 + 2*s + 5), s, t)", 3, 3,
         [](const builtin& b, const std::vector<value>& a, context&) -> value {
             return transforms::inverse_laplace(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_symbol(a, 2, b));

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "algebra/exact_linear.h"
+#include "scalar/polynomial_roots.h"
 #include "scalar/scalar.h"
 #include "core/error.h"
 
@@ -240,52 +241,14 @@ std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a,
             if (!is_zero_scalar(a[m].im)) real = false;
         }
         const ex N = real ? Pr : Pr * Pr + Pi * Pi;
-        GiNaC::exmap back;
-        std::map<ex, ex, GiNaC::ex_is_less> seen;
-        const ex Na = atomize(GiNaC::expand(N), seen, back);
-        const ex fq = GiNaC::factor(GiNaC::expand(GiNaC::numer(GiNaC::normal(Na))));
-        for (const auto& [f0, mult] : factors_of(fq)) {
-            (void)mult;
-            const ex fr = GiNaC::expand(f0.subs(back));
-            if (!fr.has(s)) continue;
-            const int d = fr.degree(s);
-            if (d == 1) {
-                candidates.push_back({tidy(-fr.coeff(s, 0) / fr.coeff(s, 1)), ex(0)});
-            } else if (d == 2) {
-                const ex c2 = fr.coeff(s, 2), c1 = fr.coeff(s, 1), c0 = fr.coeff(s, 0);
-                const ex disc = tidy(c1 * c1 - 4 * c2 * c0), re = tidy(-c1 / (2 * c2));
-                // An undecidable sign (c^2 - 4 w0^2 of s^2 + c s + w0^2) takes the
-                // oscillating form e^(re t) (cos(r t), sin(r t)/r), r = sqrt(-disc)/(2 c2):
-                // it is even in r and analytic in disc, so it is the solution for
-                // either sign (cos(i x) = cosh(x), sin(i x)/i = sinh(x)); only the
-                // double root disc = 0 is excluded (generic reading).
-                int sign = discriminant_sign(disc);
-                if (sign == 2) sign = -1;
-                switch (sign) {
-                    case 0: candidates.push_back({re, ex(0)}); break;
-                    case 1: {
-                        const ex r = tidy(exact_sqrt(disc) / (2 * c2));
-                        candidates.push_back({tidy(re + r), ex(0)});
-                        candidates.push_back({tidy(re - r), ex(0)});
-                        break;
-                    }
-                    case -1: {
-                        const ex r = tidy(exact_sqrt(-disc) / (2 * c2));
-                        candidates.push_back({re, r});
-                        candidates.push_back({re, tidy(-r)});
-                        break;
-                    }
-                    default:
-                        throw closed_form_error("characteristic polynomial " + poly_text(a) +
-                                                ": the sign of the discriminant " + str(disc) +
-                                                " of the factor " + str(fr) + " cannot be decided");
-                }
-            } else {
-                throw closed_form_error("characteristic polynomial " + poly_text(a) +
-                                        ": irreducible factor " + str(fr) + " of degree " +
-                                        std::to_string(d) + " > 2 has no closed-form roots here");
+        // the roots of N's rational factors (scalar/polynomial_roots.h); an undecidable sign
+        // (c^2 - 4 w0^2 of s^2 + c s + w0^2) takes the oscillating form e^(re t) (cos(r t),
+        // sin(r t)/r), even in r and analytic in disc, so it holds for either sign
+        for (const auto& g : rational_factors(N, s))
+            for (const auto& r : factor_roots(g.f, s, g.multiplicity, "characteristic polynomial " + poly_text(a), true)) {
+                candidates.push_back({r.re, r.im});
+                if (!r.im.is_zero()) candidates.push_back({r.re, tidy(-r.im)});
             }
-        }
     }
     std::vector<characteristic_root> roots;
     unsigned total = 0;

@@ -475,7 +475,10 @@ std::string message_text(const GiNaC::ex& e, std::size_t max) {
     }
     if (s.empty()) {
         std::ostringstream os;
-        os << e;
+        // the constant as the language writes it (GiNaC prints Pi, which reads back as a free symbol)
+        static const GiNaC::symbol pi("pi");
+        if (e.has(GiNaC::Pi)) os << e.subs(GiNaC::Pi == pi, GiNaC::subs_options::no_pattern);
+        else os << e;
         s = os.str();
     }
     if (s.size() > max)

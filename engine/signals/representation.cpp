@@ -11,9 +11,11 @@
 #include "algebra/sobrero.h"
 #include "core/error.h"
 #include "scalar/equality.h"
+#include "scalar/polynomial_roots.h"
 #include "scalar/scalar.h"
 #include "signals/multicomplex_signals.h"
 #include "signals/product.h"
+#include "signals/sampling_numeric.h"
 
 namespace symrep::signals {
 
@@ -548,95 +550,62 @@ bool numeric_value(const ex& x, GiNaC::numeric& out) {
     return true;
 }
 
-// GiNaC's factor() works over the rationals: pi, Euler and Catalan go in as symbols.
-ex factor_with_constants(const ex& x) {
-    GiNaC::exmap to, back;
-    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::constant>(*it) && !to.count(*it)) {
-            const GiNaC::symbol s;
-            to[*it] = s;
-            back[s] = *it;
-        }
-    return GiNaC::factor(x.subs(to, GiNaC::subs_options::no_pattern)).subs(back, GiNaC::subs_options::no_pattern);
-}
-
-// sqrt(x) with the square factors of x that are positive (numbers, Pi, positive
-// symbols) taken out: sqrt(-4 Pi^2) = 2 I Pi (GiNaC leaves sqrt(Pi^2) as it is).
-ex square_root(const ex& x) {
-    const ex f = factor_with_constants(GiNaC::normal(x));
-    ex out = 1, in = 1;
-    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(f) ? f.nops() : 1); ++i) {
-        const ex g = GiNaC::is_a<GiNaC::mul>(f) ? f.op(i) : f;
-        if (GiNaC::is_a<GiNaC::numeric>(g)) {
-            out *= GiNaC::sqrt(g);  // exact: sqrt(-4) = 2 I, sqrt(8) = 2 sqrt(2)
-        } else if (GiNaC::is_a<GiNaC::power>(g) &&
-                   (g.op(0).info(GiNaC::info_flags::positive) || GiNaC::is_a<GiNaC::constant>(g.op(0))) &&
-                   g.op(1).info(GiNaC::info_flags::even)) {  // (Pi, Euler and Catalan are positive)
-            out *= GiNaC::pow(g.op(0), g.op(1) / 2);
-        } else {
-            in *= g;
-        }
-    }
-    return out * GiNaC::sqrt(in);
-}
-
-// The roots of p that its rational factorization gives in radicals (factors of degree
-// 1, 2); false when a factor of higher degree has roots not found.
+// The roots of p in radicals (scalar/polynomial_roots.h: rational factors of degree 1, 2 and
+// 3), a complex pair as its two roots; false when a factor has roots not found (degree > 3,
+// or a discriminant of undecided sign).
 bool known_roots(const ex& p, const GiNaC::symbol& X, std::vector<ex>& roots) {
     bool all = true;
-    const ex f = factor_with_constants(p);
-    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(f) ? f.nops() : 1); ++i) {
-        ex g = GiNaC::is_a<GiNaC::mul>(f) ? f.op(i) : f;
-        if (GiNaC::is_a<GiNaC::power>(g)) g = g.op(0);
-        if (!g.has(X)) continue;
-        const ex e = GiNaC::expand(g);
-        const int deg = e.degree(X);
-        if (deg == 1) {
-            roots.push_back(tidy(-e.coeff(X, 0) / e.coeff(X, 1)));
-        } else if (deg == 2) {
-            const ex a = e.coeff(X, 2), b = e.coeff(X, 1), c = e.coeff(X, 0);
-            const ex r = square_root(b * b - 4 * a * c);
-            roots.push_back(tidy((-b + r) / (2 * a)));
-            roots.push_back(tidy((-b - r) / (2 * a)));
-        } else {
+    for (const auto& f : rational_factors(p, X)) {
+        std::vector<polynomial_root> rs;
+        try {
+            rs = factor_roots(f.f, X, 1, "sampling");
+        } catch (const closed_form_error&) {
             all = false;
+            continue;
+        }
+        for (const auto& r : rs) {
+            if (r.im.is_zero()) {
+                roots.push_back(r.re);
+            } else {
+                roots.push_back(tidy(r.re + GiNaC::I * r.im));
+                roots.push_back(tidy(r.re - GiNaC::I * r.im));
+            }
         }
     }
     return all;
 }
 
-// (Cor. II.3.5) q(l) = det(l I - exp(h [d])) from the factors of p: the eigenvalues of
-// exp(h d) are e^(h r), r the roots of p with their multiplicities, so a factor (X - r)^m
-// gives (l - e^(h r))^m and a quadratic a X^2 + b X + c with roots alpha +- i beta
-// (alpha +- gamma) gives l^2 - 2 e^(h alpha) cos(h beta) l + e^(2 h alpha) (cosh(h gamma)
-// for real roots). False (q not formed) for a factor of degree > 2 or a discriminant of
-// unknown sign: the caller then expands the determinant.
+// (Cor. II.3.5) q(l) = det(l I - exp(h [d])) from the roots of p: the eigenvalues of
+// exp(h d) are e^(h r), r the roots of p with their multiplicities, so a real root r of
+// multiplicity m gives (l - e^(h r))^m, a pair alpha +- i beta gives
+// (l^2 - 2 e^(h alpha) cos(h beta) l + e^(2 h alpha))^m and the two real roots alpha +- gamma
+// of a quadratic factor (l^2 - 2 e^(h alpha) cosh(h gamma) l + e^(2 h alpha))^m. False (q not
+// formed) when p has a factor whose roots are not found: the caller then expands the
+// determinant.
 bool shift_charpoly(const ex& p, const GiNaC::symbol& X, const ex& h, const GiNaC::symbol& l, ex& q) {
-    const ex f = factor_with_constants(p);
     q = 1;
-    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(f) ? f.nops() : 1); ++i) {
-        ex g = GiNaC::is_a<GiNaC::mul>(f) ? f.op(i) : f;
-        ex m = 1;
-        if (GiNaC::is_a<GiNaC::power>(g)) {
-            m = g.op(1);
-            g = g.op(0);
-        }
-        if (!g.has(X)) continue;
-        const ex e = GiNaC::expand(g);
-        const int deg = e.degree(X);
-        if (deg == 1) {
-            q *= GiNaC::pow(l - GiNaC::exp(tidy(-h * e.coeff(X, 0) / e.coeff(X, 1))), m);
-        } else if (deg == 2) {
-            const ex a = e.coeff(X, 2), b = e.coeff(X, 1), c = e.coeff(X, 0);
-            const ex disc = tidy(b * b - 4 * a * c);
-            GiNaC::numeric v;
-            if (!GiNaC::is_a<GiNaC::numeric>(disc.evalf()) || !numeric_value(disc, v) || !v.is_real() || v.is_zero())
-                return false;
-            const ex alpha = tidy(-b / (2 * a)), width = tidy(square_root(v < 0 ? -disc : disc) / (2 * a));
-            const ex middle = v < 0 ? GiNaC::cos(tidy(h * width)) : GiNaC::cosh(tidy(h * width));
-            q *= GiNaC::pow(l * l - 2 * GiNaC::exp(tidy(h * alpha)) * middle * l + GiNaC::exp(tidy(2 * h * alpha)), m);
-        } else {
+    for (const auto& f : rational_factors(p, X)) {
+        std::vector<polynomial_root> rs;
+        try {
+            rs = factor_roots(f.f, X, f.multiplicity, "sampling");
+        } catch (const closed_form_error&) {
             return false;
+        }
+        const ex m = rs.front().multiplicity;
+        if (rs.size() == 2 && f.f.degree(X) == 2 && rs[0].im.is_zero() && rs[1].im.is_zero()) {
+            const ex alpha = tidy((rs[0].re + rs[1].re) / 2), gamma = tidy((rs[0].re - rs[1].re) / 2);
+            q *= GiNaC::pow(l * l - 2 * GiNaC::exp(tidy(h * alpha)) * GiNaC::cosh(tidy(h * gamma)) * l +
+                                GiNaC::exp(tidy(2 * h * alpha)),
+                            m);
+            continue;
+        }
+        for (const auto& r : rs) {
+            if (r.im.is_zero())
+                q *= GiNaC::pow(l - GiNaC::exp(tidy(h * r.re)), r.multiplicity);
+            else
+                q *= GiNaC::pow(l * l - 2 * GiNaC::exp(tidy(h * r.re)) * GiNaC::cos(tidy(h * r.im)) * l +
+                                    GiNaC::exp(tidy(2 * h * r.re)),
+                                r.multiplicity);
         }
     }
     q = tidy(q.expand());
@@ -658,6 +627,12 @@ std::string over_pi(const ex& z) {
 // (Thm II.3.4, II.3.26, Cor. II.3.5)
 sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
     if (is_zero_scalar(h)) throw domain_error("sampling: the step h is 0");
+    // a rational factor without roots in radicals: the numeric form (exp(h d) has no closed form)
+    for (const auto& f : rational_factors(R.p, R.X))
+        if (f.f.degree(R.X) > 3)
+            return sample_numerically(R, h, l,
+                                      "p has the irreducible factor " + polynomial_text(f.f, R.X) + " of degree " +
+                                          std::to_string(f.f.degree(R.X)) + ", whose roots have no closed form");
     sampling s;
     s.shift = R.A->exp(R.d, h);
     for (auto& x : s.shift) x = tidy(x);
@@ -713,7 +688,7 @@ sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
     } else if (!all || undecided) {
         s.aliasing = truth::unknown;
         os << "aliasing at step " << text(h) << " not decided: "
-           << (!all ? "p has a rational factor of degree > 2 whose roots are not found"
+           << (!all ? "p has a rational factor whose roots are not found (degree > 3, or a discriminant of unknown sign)"
                     : "whether two roots sample to the same e^(h r) is neither proved nor disproved");
     } else if (!conditions.empty()) {
         s.aliasing = truth::no;

@@ -114,14 +114,19 @@ coeffs sequence_element(const representation& R, const GiNaC::ex& f, const GiNaC
 /// characteristic polynomial q(l) = det(l I - exp(h [d])), and the aliasing: the
 /// sampled signals span fewer than n dimensions exactly when two distinct roots r, s of
 /// p have e^(h r) = e^(h s), i.e. h (r - s) = 2 pi i m for a nonzero integer m. Decided
-/// from the roots of p's rational factors of degree <= 2: yes or no for a numeric step;
-/// for a symbolic h the report states the condition (generically: no). With a factor
-/// of higher degree (roots not in radicals) the answer is unknown, never a guess.
+/// from the roots of p: yes or no for a numeric step;
+/// for a symbolic h the report states the condition (generically: no). The roots come from
+/// p's rational factors of degree <= 3 (Cardano for 3: scalar/polynomial_roots.h), and q from
+/// them. With a factor of higher degree (roots not in radicals) and numeric p and h, the
+/// numeric form (signals/sampling_numeric.h): floats marked as numeric, with an error bound
+/// on q's coefficients; with symbols there, refused.
 struct sampling {
     coeffs shift;        ///< exp(h d): the shift of the sampled signals
     GiNaC::ex q;         ///< det(l I - exp(h [d])), monic in l
     truth aliasing = truth::unknown;
     std::string report;  ///< one sentence: which roots meet and when, or that none do
+    bool numeric = false;    ///< shift and q are floats (p has a factor without roots in radicals)
+    GiNaC::ex error_bound;   ///< numeric: every coefficient of q is within it of the exact one
 };
 sampling sample(const representation& R, const GiNaC::ex& h, const GiNaC::symbol& l);
 

@@ -2,10 +2,12 @@
 #include "transforms/laplace.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <sstream>
 
 #include "algebra/polynomial_algebra.h"
 #include "core/error.h"
+#include "scalar/polynomial_roots.h"
 #include "scalar/scalar.h"
 #include "signals/representation.h"
 
@@ -72,6 +74,80 @@ void require_same(const ex& a, const ex& b, const std::string& what) {
 
 ex real_part_of(const ex& x) { return tidy(GiNaC::real_part(x.expand())); }
 
+// x at `digits` digits with each symbol but t at a fixed rational in [1.1, 2.9] (by its name).
+bool value_at(const ex& x, const GiNaC::symbol& t, long digits, GiNaC::numeric& out) {
+    GiNaC::exmap point;
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t) && !point.count(*it)) {
+            std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name
+            for (unsigned char c : GiNaC::ex_to<GiNaC::symbol>(*it).get_name()) h = (h ^ c) * 1099511628211ull;
+            point[*it] = GiNaC::numeric(long(1100 + h % 1800), 1000);
+        }
+    return evaluate_numeric(point.empty() ? x : x.subs(point, GiNaC::subs_options::no_pattern), digits, out);
+}
+
+// The check of an inverse whose exponents are Cardano's radicals (a cubic factor of p), where
+// laplace(f) would have to simplify nested cube roots: f is the transform's inverse iff
+// p(D) f = 0 and f^(k)(0) = c_k for k < n, c_k the coefficients of F = sum_k c_k s^-(k+1)
+// (c_k = q_(n-1-k) - sum_(i=1..k) p_(n-i) c_(k-i), p monic). Both are checked at 50 digits:
+// the initial values exactly known, the residual p(D) f at t = 1/3 and t = 1 (symbols at a
+// fixed rational point), each to 10^-30 relative to its size.
+void require_same_numerically(const rational& r, const ex& f, const GiNaC::symbol& s, const GiNaC::symbol& t) {
+    const int n = r.p.degree(s);
+    std::vector<ex> c;
+    for (int k = 0; k < n; ++k) {
+        ex ck = r.q.coeff(s, n - 1 - k);
+        for (int i = 1; i <= k; ++i) ck -= r.p.coeff(s, n - i) * c[std::size_t(k - i)];
+        c.push_back(tidy(ck));
+    }
+    // f with its constants at 60 digits (t kept): the derivatives of the short numeric form,
+    // not of the radicals
+    ex fN;
+    {
+        GiNaC::exmap point;
+        for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t) && !point.count(*it)) {
+                std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name, as value_at
+                for (unsigned char ch : GiNaC::ex_to<GiNaC::symbol>(*it).get_name()) h = (h ^ ch) * 1099511628211ull;
+                point[*it] = GiNaC::numeric(long(1100 + h % 1800), 1000);
+            }
+        const long saved = GiNaC::Digits;
+        GiNaC::Digits = 60;
+        try {
+            fN = GiNaC::evalf(point.empty() ? f : f.subs(point, GiNaC::subs_options::no_pattern));
+        } catch (...) {
+            GiNaC::Digits = saved;
+            throw;
+        }
+        GiNaC::Digits = saved;
+    }
+    std::vector<ex> D{fN};
+    for (int k = 1; k <= n; ++k) D.push_back(GiNaC::diff(D.back(), t));
+    const GiNaC::numeric tol("1e-30");
+    const auto fail = [&](const std::string& what) {
+        throw algebra_error("inverse_laplace: the numeric check (50 digits) of the inverse " + text(f) + " failed: " +
+                            what);
+    };
+    for (int k = 0; k < n; ++k) {
+        GiNaC::numeric v, want;
+        if (!value_at(D[std::size_t(k)].subs(t == 0), t, 50, v) || !value_at(c[std::size_t(k)], t, 50, want))
+            fail("f^(" + std::to_string(k) + ")(0) is not a number");
+        if (GiNaC::abs(v - want) > tol * std::max(GiNaC::numeric(1), GiNaC::abs(want)))
+            fail("f^(" + std::to_string(k) + ")(0) is not " + text(c[std::size_t(k)]));
+    }
+    for (const GiNaC::numeric t0 : {GiNaC::numeric(1, 3), GiNaC::numeric(1)}) {
+        GiNaC::numeric residual = 0, size = 1;
+        for (int k = 0; k <= n; ++k) {
+            GiNaC::numeric pk, dk;
+            if (!value_at(r.p.coeff(s, k), t, 50, pk) || !value_at(D[std::size_t(k)].subs(t == t0), t, 50, dk))
+                fail("p(D) f is not a number at t = " + text(t0));
+            residual += pk * dk;
+            size += GiNaC::abs(pk * dk);
+        }
+        if (GiNaC::abs(residual) > tol * size) fail("p(D) f is not 0 at t = " + text(t0));
+    }
+}
+
 }  // namespace
 
 ex laplace(const ex& f, const GiNaC::symbol& t, const ex& s) {
@@ -86,8 +162,28 @@ ex laplace(const ex& f, const GiNaC::symbol& t, const ex& s) {
 
 ex inverse_laplace(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) {
     if (F.is_zero()) return 0;
-    const ex f = inverse_raw(proper_rational(F, s, t), s, t);
-    require_same(laplace_raw(f, t, s), F, "inverse_laplace");
+    const rational r = proper_rational(F, s, t);
+    // the roots of p in radicals: rational factors of degree <= 3 (scalar/polynomial_roots.h);
+    // a factor of higher degree is refused before anything is formed
+    bool cubic = false;
+    for (const auto& g : rational_factors(r.p, s)) {
+        const int d = g.f.degree(s);
+        if (d > 3)
+            throw closed_form_error("inverse_laplace: the denominator has the irreducible factor " +
+                                    signals::polynomial_text(g.f, s) +
+                                    " of degree " + std::to_string(d) +
+                                    " over the rationals; its roots have no closed form here (only factors of "
+                                    "degree 1, 2 and 3 are solved: Cardano for 3)");
+        if (d == 3 && g.multiplicity > 1)
+            throw closed_form_error("inverse_laplace: the denominator has the cubic factor " +
+                                    signals::polynomial_text(g.f, s) + " repeated (multiplicity " +
+                                    std::to_string(g.multiplicity) +
+                                    "); Cardano's roots are used for simple cubic factors only");
+        cubic = cubic || d == 3;
+    }
+    const ex f = inverse_raw(r, s, t);
+    if (cubic) require_same_numerically(r, f, s, t);
+    else require_same(laplace_raw(f, t, s), F, "inverse_laplace");
     return f;
 }
 

@@ -38,7 +38,11 @@ GiNaC::ex laplace(const GiNaC::ex& f, const GiNaC::symbol& t, const GiNaC::ex& s
 
 /// The causal signal f(t) with Lf = F, for F a proper rational function of s (degree of
 /// the numerator below the denominator's, coefficients free of s and t); checked by
-/// laplace(f) = F. Throws domain_error for an improper or non-rational F.
+/// laplace(f) = F. The roots of the denominator come from its factors over the rationals
+/// (scalar/polynomial_roots.h): degree 1 and 2, and 3 by Cardano, where the check is
+/// numeric (50 digits: f^(k)(0) and p(D) f = 0 at two points; laplace(f) would have to
+/// simplify nested cube roots). Throws domain_error for an improper or non-rational F,
+/// closed_form_error at once for a factor of degree > 3 (naming it and its degree).
 GiNaC::ex inverse_laplace(const GiNaC::ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t);
 
 /// (V.2.42, Thm V.2.4) The energy int_0^oo f(t)^2 dt of a causal quasi-polynomial: L[f^2](0), exact.
