@@ -33,8 +33,9 @@ namespace {
 // to the last digits. When it stays above 1e-8 of the L1 norm, the two halves are integrated
 // again: their sum agreeing with the whole to 1e-12 confirms the value; otherwise it is refused.
 template <class F>
-double gauss_kronrod(F&& g, double a, double b, bool& finite) {
+double gauss_kronrod(F&& g, double a, double b, bool& finite, double* l1_out = nullptr) {
     using rule = boost::math::quadrature::gauss_kronrod<double, 61>;
+    if (l1_out) *l1_out = 0.0;
     if (a == b) return 0.0;
     auto not_finite = [&] {
         return domain_error("integral: the integrand is not finite on [" + std::to_string(a) + ", " +
@@ -46,15 +47,20 @@ double gauss_kronrod(F&& g, double a, double b, bool& finite) {
     double error = 0, l1 = 0;
     const double whole = rule::integrate(g, a, b, 0, 0.0, &error, &l1);
     if (!finite) throw not_finite();
+    if (l1_out) *l1_out = l1;
     if (error <= 1e-14 * std::max(l1, floor)) return whole;
     const double m = a + (b - a) / 2;
     double e1 = 0, e2 = 0, n1 = 0, n2 = 0;
     const double halves = rule::integrate(g, a, m, 0, 0.0, &e1, &n1) + rule::integrate(g, m, b, 0, 0.0, &e2, &n2);
     if (!finite) throw not_finite();
-    if (std::abs(halves - whole) <= 1e-13 * std::max({l1, n1 + n2, floor})) return halves;
+    if (std::abs(halves - whole) <= 1e-13 * std::max({l1, n1 + n2, floor})) {
+        if (l1_out) *l1_out = n1 + n2;
+        return halves;
+    }
     // otherwise adaptively, to depth 15
     const double value = rule::integrate(g, a, b, 15, 1e-14, &error, &l1);
     if (!finite) throw not_finite();
+    if (l1_out) *l1_out = l1;
     if (error <= 1e-8 * std::max(l1, floor)) return value;
     std::ostringstream os;
     os << "integral: the quadrature over [" << a << ", " << b << "] did not converge (error estimate " << error
@@ -64,9 +70,10 @@ double gauss_kronrod(F&& g, double a, double b, bool& finite) {
 
 }  // namespace
 
-double integrate_numerically(const ex& variable, double a, double b, const ex& integrand) {
+double integrate_numerically(const ex& variable, double a, double b, const ex& integrand, double* l1) {
     if (!std::isfinite(a) || !std::isfinite(b))
         throw type_error("integral: the limits must be finite numbers");
+    if (l1) *l1 = 0.0;
     if (a == b) return 0.0;
     const compiled_function f = compile(integrand, {variable});
     bool finite = true;
@@ -76,10 +83,10 @@ double integrate_numerically(const ex& variable, double a, double b, const ex& i
         if (!std::isfinite(y)) finite = false;
         return y;
     };
-    return gauss_kronrod(g, a, b, finite);
+    return gauss_kronrod(g, a, b, finite, l1);
 }
 
-double integrate_nested(const ex& x, double a, double b, const ex& f) {
+double integrate_nested(const ex& x, double a, double b, const ex& f, double* l1) {
     // the inner integrals int_c^x g(s) ds (c a number, g in s alone) become the variables y_j
     std::vector<ex> vars{x};
     std::vector<compiled_function> inner;
@@ -130,7 +137,7 @@ double integrate_nested(const ex& x, double a, double b, const ex& f) {
         if (!std::isfinite(y)) finite = false;
         return y;
     };
-    return gauss_kronrod(h, a, b, finite);
+    return gauss_kronrod(h, a, b, finite, l1);
 }
 
 ex integrals_as_numbers(const ex& e) {

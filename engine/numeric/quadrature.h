@@ -24,8 +24,10 @@ bool has_integral(const GiNaC::ex& e);
 
 /// int_a^b f: symrep::type_error when a, b are not numbers or f has a symbol
 /// other than the variable; symrep::domain_error when f is not finite on [a, b]
-/// or the quadrature does not converge (the estimate is said).
-double integrate_numerically(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
+/// or the quadrature does not converge (the estimate is said). `l1` (if given) receives the
+/// rule's int_a^b |f|, the scale of its error (below 1e-8 of it, or the quadrature refuses).
+double integrate_numerically(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand,
+                            double* l1 = nullptr);
 
 /// int_a^b f(x) dx where f holds integral objects int_c^x g(s) ds (c a number, g in its own
 /// variable s alone): the nested integrals of a position integrated from a velocity that holds
@@ -33,8 +35,9 @@ double integrate_numerically(const GiNaC::ex& variable, double a, double b, cons
 /// the outer one (a smooth integrand: 183 x 183 evaluations). Not as the ODE system y' = g,
 /// z' = f(x, y): Fehlberg 7(8)'s error estimate vanishes on y' = g(x) (its stages 12 and 13
 /// repeat 1 and 11), and rkf78 at 1e-13 left 2e-10 there. domain_error for another form of
-/// nesting or a symbol left.
-double integrate_nested(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand);
+/// nesting or a symbol left. `l1`: the outer rule's int_a^b |f|, as integrate_numerically.
+double integrate_nested(const GiNaC::ex& variable, double a, double b, const GiNaC::ex& integrand,
+                        double* l1 = nullptr);
 
 /// e with every integral object whose limits are numbers and whose integrand has
 /// no symbol but its variable (or nested integrals, integrate_nested) replaced by its value.
