@@ -44,7 +44,16 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         if (!T->free.is_zero() && !equal(cross(F.u, T->free), 0)) {
             // across the axis with an angle that is itself an integral: Duhamel's integrand holds
             // it, a nested integral (numeric/quadrature.h evaluates it)
-            F.free = dot(F.u, T->free) / dot(F.u, F.u) * F.u;
+            // (u . F)/|u|^2 u term by term over F = sum_j c_j(t) V_j with V_j constant: a literal
+            // holding t ([t e^-t, 2, sin(2 t)]) would leave t inside u . F, which the inertial
+            // problem cannot read as a function of t times a vector
+            const auto terms = terms_in_time(T->free, P.t);
+            ex along = 0;
+            if (terms)
+                for (const auto& [q, V] : *terms) along += q * dot(F.u, V);
+            else
+                along = dot(F.u, T->free);
+            F.free = along / dot(F.u, F.u) * F.u;
             F.across = T->free - F.free;
         }
         // the inertial problem m psi'' + k psi + F = 0, psi(0) = r0, psi'(0) = v0 + w(0) x r0

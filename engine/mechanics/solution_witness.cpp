@@ -46,11 +46,16 @@ numeric real_number(const ex& e) {
 // variables), at GiNaC::Digits (the caller's 40). `integrals` is set when one is met.
 struct evaluator {
     bool integrals = false;
+    GiNaC::exmap floats;  // the symbols standing for floating-point numbers -> the numbers
     std::map<ex, valued, GiNaC::ex_is_less> seen;
 
     valued operator()(const ex& e) {
         if (GiNaC::is_a<numeric>(e)) {
             const numeric x = real_number(e);
+            return {x, GiNaC::abs(x)};
+        }
+        if (GiNaC::is_a<GiNaC::symbol>(e) && floats.count(e)) {
+            const numeric x = GiNaC::ex_to<numeric>(floats.at(e));
             return {x, GiNaC::abs(x)};
         }
         if (GiNaC::is_a<GiNaC::constant>(e)) {
@@ -146,6 +151,29 @@ std::vector<ex> components(const ex& e, bool is_vector) {
     return {e.op(0), e.op(1), e.op(2)};
 }
 
+// Every floating-point number of e as a symbol (kept in `floats`): GiNaC adds and multiplies
+// numbers as soon as they meet, so that with the point put in, a sum of floats that cancels
+// would be one rounded number with nothing left to measure its terms by.
+ex floats_as_symbols(const ex& e, GiNaC::exmap& floats, std::map<ex, ex, GiNaC::ex_is_less>& symbol_of) {
+    struct replace : GiNaC::map_function {
+        GiNaC::exmap& floats;
+        std::map<ex, ex, GiNaC::ex_is_less>& symbol_of;
+        replace(GiNaC::exmap& f, std::map<ex, ex, GiNaC::ex_is_less>& s) : floats(f), symbol_of(s) {}
+        ex operator()(const ex& x) override {
+            if (GiNaC::is_a<numeric>(x) && !GiNaC::ex_to<numeric>(x).is_crational()) {
+                auto it = symbol_of.find(x);
+                if (it != symbol_of.end()) return it->second;
+                const ex f = GiNaC::realsymbol("float" + std::to_string(symbol_of.size()));
+                symbol_of[x] = f;
+                floats[f] = x;
+                return f;
+            }
+            return x.map(*this);
+        }
+    } r(floats, symbol_of);
+    return r(e);
+}
+
 std::string problem_text(const cauchy_problem& P) {
     std::string s = "ode(" + to_string(P.expression) + " = 0";
     for (std::size_t m = 0; m < P.initial.size(); ++m)
@@ -164,11 +192,18 @@ witness_report witness(const cauchy_problem& P, const ex& s) {
         long d;
         ~restore() { GiNaC::Digits = d; }
     } keep{saved};
+    const numeric float_tolerance(rounding_tolerance());  // at the caller's Digits, not at 40
     const bool floats = has_float(P.expression) || has_float(s) ||
                         std::any_of(P.initial.begin(), P.initial.end(), [](const ex& x) { return has_float(x); });
     try {
         const std::size_t M = P.order();
         const ex& t = P.t;
+        GiNaC::exmap float_values;
+        std::map<ex, ex, GiNaC::ex_is_less> symbol_of;
+        const ex S = floats ? floats_as_symbols(s, float_values, symbol_of) : s;
+        const ex E = floats ? floats_as_symbols(P.expression, float_values, symbol_of) : P.expression;
+        std::vector<ex> X0;
+        for (const ex& x : P.initial) X0.push_back(floats ? floats_as_symbols(x, float_values, symbol_of) : x);
         const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
         // the point: vector symbols (not the unknowns) by components, then the scalars
         vmap comps;
@@ -176,8 +211,8 @@ witness_report witness(const cauchy_problem& P, const ex& s) {
         std::set<ex, GiNaC::ex_is_less> bound;
         if (P.is_vector) {
             std::set<ex, GiNaC::ex_is_less> unknowns(P.unknowns.begin(), P.unknowns.end());
-            std::vector<ex> parts{s, P.expression};
-            parts.insert(parts.end(), P.initial.begin(), P.initial.end());
+            std::vector<ex> parts{S, E};
+            parts.insert(parts.end(), X0.begin(), X0.end());
             for (const ex& part : parts)
                 for (const ex& v : vector_symbols(part)) {
                     if (unknowns.count(v) || comps.count(v)) continue;
@@ -186,14 +221,15 @@ witness_report witness(const cauchy_problem& P, const ex& s) {
                     comps[v] = vector_literal(witness_rational(n, 1), -witness_rational(n, 2), witness_rational(n, 3));
                 }
         }
-        for (const ex& part : {s, P.expression}) point_symbols(part, t, bound, point);
-        for (const ex& x : P.initial) point_symbols(x, t, bound, point);
+        for (const ex& part : {S, E}) point_symbols(part, t, bound, point);
+        for (const ex& x : X0) point_symbols(x, t, bound, point);
+        for (const auto& [f, x] : float_values) point.erase(f);
         for (const ex& u : P.unknowns) point.erase(u);
         auto at = [&](const ex& e) {
             return (P.is_vector ? subs_components(e, comps) : e).subs(point, GiNaC::subs_options::no_pattern);
         };
         // s, s', ..., s^(M) by components (numbers but t)
-        std::vector<std::vector<ex>> d{components(at(s), P.is_vector)};
+        std::vector<std::vector<ex>> d{components(at(S), P.is_vector)};
         for (std::size_t m = 1; m <= M; ++m) {
             std::vector<ex> next;
             for (const ex& c : d.back()) next.push_back(c.diff(ts));
@@ -204,11 +240,11 @@ witness_report witness(const cauchy_problem& P, const ex& s) {
         if (P.is_vector) {
             vmap all = comps;
             for (std::size_t m = 0; m <= M; ++m) all[P.unknowns[m]] = vector_literal(d[m][0], d[m][1], d[m][2]);
-            R = subs_components(P.expression, all).subs(point, GiNaC::subs_options::no_pattern);
+            R = subs_components(E, all).subs(point, GiNaC::subs_options::no_pattern);
         } else {
             GiNaC::exmap all = point;
             for (std::size_t m = 0; m <= M; ++m) all[P.unknowns[m]] = d[m][0];
-            R = P.expression.subs(all, GiNaC::subs_options::no_pattern);
+            R = E.subs(all, GiNaC::subs_options::no_pattern);
         }
         // what is tested: the residual's components at t = 7/10, the initial differences at 0
         std::vector<std::pair<std::string, ex>> tests;
@@ -217,7 +253,7 @@ witness_report witness(const cauchy_problem& P, const ex& s) {
             tests.push_back({"the residual" + (P.is_vector ? " (component " + std::to_string(i + 1) + ")" : std::string()),
                              rc[i].subs(t == witness_time())});
         for (std::size_t m = 0; m < M; ++m) {
-            const std::vector<ex> X = components(at(P.initial[m]), P.is_vector);
+            const std::vector<ex> X = components(at(X0[m]), P.is_vector);
             for (std::size_t i = 0; i < X.size(); ++i)
                 tests.push_back({"the initial value " + P.unknown_name(m) + "(0)" +
                                      (P.is_vector ? " (component " + std::to_string(i + 1) + ")" : std::string()),
@@ -225,22 +261,34 @@ witness_report witness(const cauchy_problem& P, const ex& s) {
         }
         GiNaC::Digits = 40;
         evaluator eval;
+        eval.floats = float_values;
         const numeric exact_tolerance = GiNaC::pow(numeric(10), numeric(-20));
-        for (const auto& [what, e] : tests) {
-            valued v;
+        std::vector<std::pair<std::size_t, valued>> values;  // (test, value) of those decided
+        bool integrals = false;
+        numeric largest = 0;
+        for (std::size_t i = 0; i < tests.size(); ++i) {
             try {
-                v = eval(e);
+                values.push_back({i, eval(tests[i].second)});
             } catch (const undecided&) {
                 continue;  // this one is not decided at the point; the others still are
             } catch (const std::exception&) {
                 continue;  // a pole (division by 0), a function without a derivative
             }
-            const numeric tolerance = num::has_integral(e) ? numeric(1, 1000000)
-                                      : floats             ? numeric(rounding_tolerance())
-                                                           : exact_tolerance;
-            if (GiNaC::abs(v.value) > tolerance * v.size) {
+            integrals = integrals || num::has_integral(tests[i].second);
+            largest = std::max(largest, values.back().second.size);
+        }
+        // With floats (rounded once at the end of the derivation) or integral objects (doubles), a
+        // component that cancels to 0 keeps the rounding of terms that the rounding itself has
+        // made small: the scale is then the largest magnitude of all (check()'s rounding ratio
+        // takes the largest coefficient of all components the same way).
+        for (const auto& [i, v] : values) {
+            const numeric scale = floats || integrals ? largest : v.size;
+            const numeric tolerance = integrals ? numeric(1, 1000000)
+                                      : floats  ? float_tolerance
+                                                : exact_tolerance;
+            if (GiNaC::abs(v.value) > tolerance * scale) {
                 out.seen_nonzero = true;
-                out.what = what;
+                out.what = tests[i].first;
                 out.value = v.value.to_double();
                 out.size = v.size.to_double();
                 return out;
