@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "lang/interpreter.h"
+#include "mechanics/cauchy_problem.h"
+#include "mechanics/solution_witness.h"
 #include "numeric/evaluator.h"
 #include "vector/vector.h"
 
@@ -131,6 +133,56 @@ void BM_Mechanics_Check(benchmark::State& state) {
     check_over_solve(state, a.declarations, a.problem, app_names[state.range(0)]);
 }
 BENCHMARK(BM_Mechanics_Check)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
+// Issue 27: the cost of solve's witness (mechanics/solution_witness.h), the residual at one
+// point before solve returns. One problem per row: the thesis's problems above, forcings of
+// BM_Mechanics_DeriveForced, and the fixed-axis paths (closed form, integral objects, nested
+// integrals by a velocity, a turning closed form). Each iteration derives with
+// solve_unwitnessed and then runs the witness, timed apart; the counters are the witness's
+// time over the derivation's (`x_solve`) and its milliseconds (`witness_ms`).
+const application witness_apps[] = {
+    apps[0],
+    apps[5],
+    apps[6],
+    {"vector w, g, r0, v0; positive w0",
+     "ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = t*exp(-t)*cos(2*t)*g, r(0) = r0, r'(0) = v0)"},
+    {"vector u, r0, v0; positive w0; w := (a + b*sin(c*t))*u",
+     "ode(r'' + 2*w x r' + w' x r + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)"},
+    {"vector r0, v0; w := (1/2 + t)*[0, 0, 1]",
+     "ode(r'' + 2*w x r' + w' x r + w x (w x r) = cos(t)*[1, 0, 0], r(0) = r0, r'(0) = v0)"},
+    {"vector n, v0, E; positive m", "ode(m*v' = q*(v x ((B0 + B1*cos(f*t))*n) + E), v(0) = v0)"},
+    {"vector r0, v0, E; positive m", "ode(m*r'' = q*(r' x ((1 + t)*[0, 0, 1]) + E), r(0) = r0, r'(0) = v0)"},
+    {"vector r0, v0; w := [a*sin(c*t), a*cos(c*t), b]",
+     "ode(r'' + 2*w x r' + w' x r + w x (w x r) + w0^2*r = 0, r(0) = r0, r'(0) = v0)"},
+};
+const char* const witness_names[] = {"VI.1.28_first_order", "VI.1.68_foucault", "VI.2.93_reduced_foucault",
+                                     "foucault_t_e^-t_cos2t", "VI.2.70_varying_rate", "fixed_axis_force_across",
+                                     "VI.2.62_E_across_B(t)", "VI.2.51_position_nested", "VI.3_precession"};
+
+void BM_Mechanics_Witness(benchmark::State& state) {
+    const application& a = witness_apps[state.range(0)];
+    std::ostringstream out, err;
+    lang::session s(out, err);
+    s.evaluate(a.declarations);
+    const lang::value P = s.evaluate(a.problem);
+    double solve_s = 0, witness_s = 0;
+    long n = 0;
+    for (auto _ : state) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const ex x = mechanics::solve_unwitnessed(P.as_problem());
+        const auto t1 = std::chrono::steady_clock::now();
+        const mechanics::witness_report w = mechanics::witness(P.as_problem(), x);
+        const auto t2 = std::chrono::steady_clock::now();
+        solve_s += std::chrono::duration<double>(t1 - t0).count();
+        witness_s += std::chrono::duration<double>(t2 - t1).count();
+        ++n;
+        if (w.seen_nonzero) state.SkipWithError("the witness sees the solution wrong");
+    }
+    state.counters["x_solve"] = witness_s / solve_s;
+    state.counters["witness_ms"] = 1e3 * witness_s / double(n);
+    state.SetLabel(witness_names[state.range(0)]);
+}
+BENCHMARK(BM_Mechanics_Witness)->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
 
 // The Foucault solution at Paris, derived by symrep, in components with the
 // parameters put in; one input t.

@@ -85,4 +85,13 @@ public:
     using error::error;
 };
 
+/// A defect of the engine, never of the input: a result it derived that its own test
+/// shows wrong (solve() of a Cauchy problem checks its solution at a point before it
+/// returns it, mechanics/solution_witness.h). The message names the problem and what was
+/// seen; the result is withheld, never printed.
+class internal_error : public error {
+public:
+    using error::error;
+};
+
 }  // namespace symrep

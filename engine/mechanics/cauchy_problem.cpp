@@ -3,6 +3,7 @@
 #include "mechanics/fixed_axis.h"
 #include "mechanics/turning_frame.h"
 #include "mechanics/quasi_polynomial.h"
+#include "mechanics/solution_witness.h"
 
 #include <algorithm>
 #include <array>
@@ -448,8 +449,14 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 }
 
 ex solve(const cauchy_problem& P) {
+    const ex x = solve_unwitnessed(P);
+    require_witness(P, x);  // (issue 27) never a result that its residual at a point sees wrong
+    return x;
+}
+
+ex solve_unwitnessed(const cauchy_problem& P) {
     if (!P.reduced && P.velocity) {  // (VI.2.51) x = x(0) + int_0^t x'
-        const ex v = solve(*P.velocity);
+        const ex v = solve_unwitnessed(*P.velocity);
         try {
             return P.initial[0] + integral_in_t(v, P.t);
         } catch (const domain_error& e) {
@@ -907,10 +914,7 @@ proof prove(const cauchy_problem& P, const ex& s) {
 // exact test by components decides. Spares that test (seconds with |w| = sqrt(w1^2 + ...)) for
 // a wrong solution.
 bool nonzero_at_a_point(const ex& r, const ex& t) {
-    auto rational_for = [](const std::string& name, int salt) {
-        const std::size_t h = std::hash<std::string>{}(name) + std::size_t(salt) * 7919;
-        return GiNaC::numeric(long(1100 + h % 1800), 1000);  // in [1.1, 2.9]
-    };
+    const auto rational_for = witness_rational;  // the point of solve()'s witness (solution_witness.h)
     vmap comps;
     for (const ex& v : vector_symbols(r)) {
         const std::string n = to_string(v);
@@ -923,7 +927,7 @@ bool nonzero_at_a_point(const ex& r, const ex& t) {
             const ex ci = GiNaC::is_a<GiNaC::matrix>(c) ? c.op(i) : c;
             for (auto it = ci.preorder_begin(); it != ci.preorder_end(); ++it)
                 if (GiNaC::is_a<GiNaC::symbol>(*it) && !point.count(*it))
-                    point[*it] = it->is_equal(t) ? GiNaC::numeric(7, 10)
+                    point[*it] = it->is_equal(t) ? witness_time()
                                                  : ex(rational_for(GiNaC::ex_to<GiNaC::symbol>(*it).get_name(), 0));
         }
         const long saved = GiNaC::Digits;

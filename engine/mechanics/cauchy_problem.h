@@ -83,7 +83,13 @@ operator_form reduce(const cauchy_problem& P);
 /// Errors as reduce() and solve(operator_ode, ...) (closed_form_error when a
 /// characteristic root has no closed form, algebra_error for a singular leading
 /// coefficient).
+/// Before it returns, the solution's residual and initial values are evaluated at one point
+/// (solution_witness.h): a result seen wrong there is withheld, internal_error naming P.
 GiNaC::ex solve(const cauchy_problem& P);
+
+/// solve() without the witness: for the solvers that call it on their sub-problems (the
+/// inertial problem, the impulse response, the velocity), whose result the outer witness tests.
+GiNaC::ex solve_unwitnessed(const cauchy_problem& P);
 
 /// x = sum_P c_0(t) P + c_1(t) w x P + c_2(t) w x (w x P) over the placeholders
 /// of S (VI.1.21-22, 28, 31), with F's data vectors for the names and |w| for

@@ -44,7 +44,16 @@ std::optional<fixed_axis_form> read_fixed_axis(const cauchy_problem& P, std::str
         if (!T->free.is_zero() && !equal(cross(F.u, T->free), 0)) {
             // across the axis with an angle that is itself an integral: Duhamel's integrand holds
             // it, a nested integral (numeric/quadrature.h evaluates it)
-            F.free = dot(F.u, T->free) / dot(F.u, F.u) * F.u;
+            // (u . F)/|u|^2 u term by term over F = sum_j c_j(t) V_j with V_j constant: a literal
+            // holding t ([t e^-t, 2, sin(2 t)]) would leave t inside u . F, which the inertial
+            // problem cannot read as a function of t times a vector
+            const auto terms = terms_in_time(T->free, P.t);
+            ex along = 0;
+            if (terms)
+                for (const auto& [q, V] : *terms) along += q * dot(F.u, V);
+            else
+                along = dot(F.u, T->free);
+            F.free = along / dot(F.u, F.u) * F.u;
             F.across = T->free - F.free;
         }
         // the inertial problem m psi'' + k psi + F = 0, psi(0) = r0, psi'(0) = v0 + w(0) x r0
@@ -81,7 +90,7 @@ ex impulse_response(const cauchy_problem& P, const fixed_axis_form& F) {
     for (std::size_t m = 0; m <= M; ++m) G.unknowns.push_back(GiNaC::realsymbol(G.unknown_name(m)));
     G.expression = F.m * G.unknowns[M] + F.k * G.unknowns[0];
     for (std::size_t m = 0; m < M; ++m) G.initial.push_back(m + 1 == M ? 1 / F.m : ex(0));
-    return solve(G);
+    return solve_unwitnessed(G);
 }
 
 // e = k * rest with k the factors free of x.
@@ -163,20 +172,18 @@ ex duhamel(const ex& G, const ex& c, const ex& t) {
 
 // (Thm VI.2.1.1, VI.2.9-12) r = Q psi, Q the rotation by -a(t) about n = u/|u|.
 ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F) {
-    ex psi = solve(*F.inertial);
+    ex psi = solve_unwitnessed(*F.inertial);
     if (!F.across.is_zero()) {
         // (VI.2.57-59, 62) psi_perp = -int_0^t G(t - tau) Q^T(tau) F_perp(tau) dtau
-        // F_perp = sum_q q(t) W_q, grouped by the part q(t) of each coefficient that depends on t
-        // (a constant E: one group, W = F_perp, and the two integrals I_c, I_s of VI.2.62)
-        std::vector<std::pair<ex, ex>> groups;
-        for (const vector_term& term : canonical_terms(F.across)) {
-            const auto [k, q] = split_constant(term.coefficient, P.t);
-            auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& p) { return p.first.is_equal(q); });
-            if (g == groups.end()) groups.push_back({q, k * term.monomial});
-            else g->second += k * term.monomial;
-        }
+        // F_perp = sum_q q(t) W_q with every W_q constant (terms_in_time: t inside a literal,
+        // [cos(t), 0, 0], goes into q, never stays in W outside the integral); a constant E: one
+        // group, W = F_perp, and the two integrals I_c, I_s of VI.2.62
+        const auto groups = terms_in_time(F.across, P.t);
+        if (!groups)
+            throw closed_form_error("the force " + to_string(F.across) + " across the axis " + to_string(F.u) +
+                                    " is not a sum of functions of " + to_string(P.t) + " times constant vectors");
         const ex G = impulse_response(P, F), U = norm(F.u);
-        for (const auto& [q, W] : groups) {
+        for (const auto& [q, W] : *groups) {
             const ex C = duhamel(G, q * GiNaC::cos(F.angle), P.t);
             const ex S = duhamel(G, q * GiNaC::sin(F.angle), P.t);
             psi -= C * canonical(W) + S / U * canonical(cross(F.u, W));

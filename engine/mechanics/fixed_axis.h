@@ -22,7 +22,8 @@
 // across a turning axis, VI.2.38) enters the inertial problem rotated: with
 // F = F_par + F_perp (along and across u), Q^T F_perp = cos(a) F_perp + sin(a) n x F_perp,
 // so that psi = psi_par - sum_j (C_j(t) V_j + S_j(t) n x V_j) over the terms c_j(t) V_j
-// of F_perp, where (Duhamel, G the impulse response of m y^(M) + k y)
+// of F_perp with every V_j constant (terms_in_time, turning_frame.h: a literal holding t,
+// [cos(t), 0, 0], is split by components, its t goes into c_j), where (Duhamel, G the impulse response of m y^(M) + k y)
 //     C_j(t) = int_0^t G(t - tau) c_j(tau) cos a(tau) dtau,  S_j likewise with sin,
 // in closed form when the integrand is a quasi-polynomial (convolution, VI.1.25)
 // and otherwise kept as an integral object (GiNaC::integral in tau; the nested

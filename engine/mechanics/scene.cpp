@@ -1,5 +1,6 @@
 // symrep/mechanics/scene.cpp -- the smallest exact model of a scene (scene.h).
 #include "mechanics/scene.h"
+#include "mechanics/solution_witness.h"
 
 #include "mechanics/fixed_axis.h"
 #include "mechanics/turning_frame.h"
@@ -419,7 +420,9 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
             floats = floats || has_float(x);
             x = num::exact_floats_of(x);
         }
-        out.model_solution = closed_turning ? *closed_turning : P.velocity ? solve(P) : solve_fixed_axis(P, *P.fixed_axis);
+        // solve(P) reduces as solve_fixed_axis does, with its witness (solution_witness.h)
+        if (closed_turning) require_witness(P, *closed_turning);
+        out.model_solution = closed_turning ? *closed_turning : solve(P);
         out.x = put_values(out.model_solution, exact);
         if (floats) out.x = normalize_trig_signs(GiNaC::evalf(out.x));
         // integral objects (a free term across the axis) keep the nesting of the general form:

@@ -3,6 +3,7 @@
 #include "mechanics/turning_frame.h"
 #include "mechanics/fixed_axis.h"
 
+#include <algorithm>
 #include <map>
 
 #include "core/error.h"
@@ -40,6 +41,32 @@ bool depends_on_time(const ex& e, const ex& t) {
     for (const ex& v : vector_symbols(e))
         if (!diff_t(v, t).is_zero()) return true;
     return false;
+}
+
+std::optional<std::vector<std::pair<ex, ex>>> terms_in_time(const ex& v, const ex& t) {
+    std::vector<std::pair<ex, ex>> out;  // (c_j(t), V_j)
+    auto add = [&](const ex& c, const ex& V) {
+        // c = k q(t) with k free of t: q is the key, k goes into V
+        ex k = 1, q = 1;
+        if (!c.has(t)) k = c;
+        else if (!GiNaC::is_a<GiNaC::mul>(c)) q = c;
+        else
+            for (std::size_t i = 0; i < c.nops(); ++i) (c.op(i).has(t) ? q : k) *= c.op(i);
+        if (k.is_zero()) return;
+        auto g = std::find_if(out.begin(), out.end(), [&](const auto& p) { return p.first.is_equal(q); });
+        if (g == out.end()) out.push_back({q, k * V});
+        else g->second += k * V;
+    };
+    for (const vector_term& term : canonical_terms(v)) {
+        if (is_vector_literal(term.monomial) && term.monomial.has(t))
+            for (int i = 0; i < 3; ++i) add(term.coefficient * term.monomial.op(i), vector_literal(i == 0, i == 1, i == 2));
+        else
+            add(term.coefficient, term.monomial);
+    }
+    // what is left in a V_j that depends on time (a vector function w(t), a dot product with one)
+    for (const auto& [q, V] : out)
+        if (depends_on_time(V, t)) return std::nullopt;
+    return out;
 }
 
 namespace {
@@ -132,17 +159,9 @@ std::optional<std::pair<ex, ex>> fixed_direction(const ex& w, const ex& t) {
 
 std::optional<turning_frame_form::precession> regular_precession(const ex& w, const ex& t) {
     // w as a sum of scalar functions of t times constant vectors (literals by components)
-    std::vector<std::pair<ex, ex>> terms;
-    for (const vector_term& term : canonical_terms(w)) {
-        if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
-            for (int i = 0; i < 3; ++i)
-                terms.push_back({term.coefficient * term.monomial.op(i), vector_literal(i == 0, i == 1, i == 2)});
-        } else if (depends_on_time(term.monomial, t)) {
-            return std::nullopt;
-        } else {
-            terms.push_back({term.coefficient, term.monomial});
-        }
-    }
+    const auto read = terms_in_time(w, t);
+    if (!read) return std::nullopt;
+    const std::vector<std::pair<ex, ex>>& terms = *read;
     // the frequency c: the first argument c t of a sin or cos
     ex c;
     for (const auto& [k, V] : terms)

@@ -64,6 +64,14 @@ void require_value_at_zero(const GiNaC::ex& w, const GiNaC::ex& t, const std::st
 /// e depends on t: t occurs in it, or a vector declared as a function of t (vector w(t)).
 bool depends_on_time(const GiNaC::ex& e, const GiNaC::ex& t);
 
+/// A vector v as sum_j c_j(t) V_j with every V_j constant (free of t and of vectors declared as
+/// functions of t): its canonical terms, a literal that holds t split by components
+/// (c [x(t), y(t), 0] = c x(t) [1, 0, 0] + c y(t) [0, 1, 0]), the terms with the same c_j(t) (up
+/// to a factor free of t) grouped. Nothing when a term depends on t otherwise (a vector
+/// function w(t)). A literal's t is no constant vector: left in V_j, a solver that treats V_j
+/// as constant would move c(t) out of an integral in t (issue 27).
+std::optional<std::vector<std::pair<GiNaC::ex, GiNaC::ex>>> terms_in_time(const GiNaC::ex& v, const GiNaC::ex& t);
+
 /// (VI.2.12) a(t) = |u| int_0^t s for w = s(t) u: in closed form when s is a quasi-polynomial;
 /// otherwise the integral object |u| int_0^t s(tau) dtau when `integral_object`, else nothing.
 std::optional<GiNaC::ex> rotation_angle(const GiNaC::ex& s, const GiNaC::ex& u, const GiNaC::ex& t,
