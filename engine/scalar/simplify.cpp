@@ -1,5 +1,6 @@
 // symrep/scalar/simplify.cpp -- tidy, trigonometric signs, arctangents, exp and log of scalars (scalar.h).
 #include "scalar/scalar.h"
+#include "scalar/small_primes.h"
 #include "scalar/equality.h"
 
 #include <algorithm>
@@ -160,16 +161,13 @@ bool has_rational_radical(const GiNaC::ex& x) {
 void square_part(GiNaC::numeric n, GiNaC::numeric& a, GiNaC::numeric& b) {
     a = 1;
     b = 1;
-    for (long p = 2; p < 65536 && p * p <= n; ++p) {
+    const small_factorization f = small_prime_factors(n);
+    for (const auto& [p, k] : f.factors) {
         const GiNaC::numeric pp(p);
-        int k = 0;
-        while (GiNaC::irem(n, pp).is_zero()) {
-            n = GiNaC::iquo(n, pp);
-            ++k;
-        }
         for (int i = 0; i + 1 < k; i += 2) a *= pp;
         if (k % 2) b *= pp;
     }
+    n = f.cofactor;
     const GiNaC::numeric r = GiNaC::isqrt(n);
     if (r * r == n) a *= r;
     else b *= n;

@@ -1,5 +1,6 @@
 // symrep/scalar/zero_test.cpp -- the exact zero test and the forms it reduces to (scalar.h).
 #include "scalar/scalar.h"
+#include "scalar/small_primes.h"
 
 #include <cmath>
 #include <map>
@@ -14,30 +15,22 @@ namespace symrep {
 
 GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
     struct expand_logs : GiNaC::map_function {
-        static GiNaC::ex log_of_integer(GiNaC::numeric N) {
+        static GiNaC::ex log_of_integer(const GiNaC::numeric& N) {
             GiNaC::ex out = 0;
-            for (long p = 2; p < 65536 && N > 1; ++p) {
-                if (GiNaC::numeric(p) * p > N) break;
-                int k = 0;
-                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
-                if (k) out += k * GiNaC::log(GiNaC::ex(p));
-            }
-            if (N > 1) out += GiNaC::log(GiNaC::ex(N));
+            const small_factorization f = small_prime_factors(N);
+            for (const auto& [p, k] : f.factors) out += k * GiNaC::log(GiNaC::ex(p));
+            if (f.cofactor > 1) out += GiNaC::log(GiNaC::ex(f.cofactor));
             return out;
         }
         static bool is_positive_rational(const GiNaC::ex& x) {
             return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
                    GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
         }
-        static GiNaC::ex power_of_integer(GiNaC::numeric N, const GiNaC::ex& q) {
+        static GiNaC::ex power_of_integer(const GiNaC::numeric& N, const GiNaC::ex& q) {
             GiNaC::ex out = 1;
-            for (long p = 2; p < 65536 && N > 1; ++p) {
-                if (GiNaC::numeric(p) * p > N) break;
-                int k = 0;
-                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
-                if (k) out *= GiNaC::pow(GiNaC::ex(p), k * q);
-            }
-            if (N > 1) out *= GiNaC::pow(GiNaC::ex(N), q);
+            const small_factorization f = small_prime_factors(N);
+            for (const auto& [p, k] : f.factors) out *= GiNaC::pow(GiNaC::ex(p), k * q);
+            if (f.cofactor > 1) out *= GiNaC::pow(GiNaC::ex(f.cofactor), q);
             return out;
         }
         GiNaC::ex operator()(const GiNaC::ex& x) override {
