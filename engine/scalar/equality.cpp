@@ -99,10 +99,11 @@ bool exactly_nonzero_factor(const GiNaC::ex& f) {
 
 zero_decision decide_zero(const GiNaC::ex& x) {
     zero_decision d;
-    // c r y with c, r nonzero numbers (a rational, sqrt of a positive rational) is 0 exactly
-    // when y is: decided on y, whose value is not scaled down to below the witness's floor by
-    // c (the pivots of a scene with the exact rationals of doubles are 1e-28 sqrt(...))
-    if (GiNaC::is_a<GiNaC::mul>(x)) {
+    // a constant c r y with c, r nonzero numbers (a rational, sqrt of a positive rational) is 0
+    // exactly when y is: decided on y, whose value is not scaled down to below the witness's
+    // floor by c (the pivots of a scene with the exact rationals of doubles are 1e-28 sqrt(...)).
+    // Expressions with symbols keep their witness points (seeded by the whole expression).
+    if (GiNaC::is_a<GiNaC::mul>(x) && symbols_by_name(x).empty()) {
         GiNaC::ex scale = 1, rest = 1;
         for (std::size_t i = 0; i < x.nops(); ++i)
             (exactly_nonzero_factor(x.op(i)) ? scale : rest) *= x.op(i);
