@@ -84,8 +84,45 @@ bool nonzero_witness(const GiNaC::ex& x, GiNaC::numeric& value) {
 
 }  // namespace
 
+namespace {
+
+/// A factor that is a nonzero number exactly: a nonzero numeric, or a power of a positive
+/// rational (sqrt(N), N^(-3/2)), which is positive whatever its size.
+bool exactly_nonzero_factor(const GiNaC::ex& f) {
+    if (GiNaC::is_a<GiNaC::numeric>(f)) return !f.is_zero();
+    return GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(0)) &&
+           GiNaC::ex_to<GiNaC::numeric>(f.op(0)).is_rational() && GiNaC::ex_to<GiNaC::numeric>(f.op(0)).is_positive() &&
+           GiNaC::is_a<GiNaC::numeric>(f.op(1)) && GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_rational();
+}
+
+}  // namespace
+
 zero_decision decide_zero(const GiNaC::ex& x) {
     zero_decision d;
+    // a constant c r y with c, r nonzero numbers (a rational, sqrt of a positive rational) is 0
+    // exactly when y is: decided on y, whose value is not scaled down to below the witness's
+    // floor by c (the pivots of a scene with the exact rationals of doubles are 1e-28 sqrt(...)).
+    // Expressions with symbols keep their witness points (seeded by the whole expression).
+    if (GiNaC::is_a<GiNaC::mul>(x) && symbols_by_name(x).empty()) {
+        GiNaC::ex scale = 1, rest = 1;
+        for (std::size_t i = 0; i < x.nops(); ++i)
+            (exactly_nonzero_factor(x.op(i)) ? scale : rest) *= x.op(i);
+        if (!scale.is_equal(1)) {
+            if (GiNaC::is_a<GiNaC::numeric>(rest)) {  // every factor a nonzero number
+                d.is_zero = truth::no;
+                GiNaC::numeric v;
+                if (evaluate_numeric(x, 40, v)) d.value = v;
+                return d;
+            }
+            d = decide_zero(rest);
+            if (d.is_zero == truth::no) {
+                GiNaC::numeric c;
+                d.value = evaluate_numeric(scale, 40, c) ? GiNaC::ex(c * GiNaC::ex_to<GiNaC::numeric>(d.value))
+                                                         : d.value;
+            }
+            return d;
+        }
+    }
     if (is_zero_scalar(x)) {
         d.is_zero = truth::yes;
         return d;

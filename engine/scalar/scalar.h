@@ -26,7 +26,8 @@ namespace symrep {
 
 /// Logarithms of products of powers of positive rationals, and such powers,
 /// written over primes: log(c b^e) -> log(c) + e log(b), 8^(1/2) -> 2 2^(1/2), log(p1^k1 ... / q1^l1 ...) -> k1 log(p1) + ... - l1 log(q1) - ...
-/// (prime factors below 2^16 are split off; a larger cofactor stays one atom).
+/// (prime factors below 2^16 are split off; the larger cofactors of e are written over one
+/// coprime base, scalar/small_primes.h, so that sqrt(3 P) and sqrt(3 P q^2) meet for large P, q).
 /// Two sums of such logarithms are equal iff their expanded forms agree, so the
 /// zero test sees log(16)/2 = log(4) = 2 log(2).
 GiNaC::ex expand_rational_logs(const GiNaC::ex& e);
@@ -156,7 +157,9 @@ GiNaC::ex in_square_root_field(const GiNaC::ex& c, bool rational_bases = false);
 GiNaC::ex simplified_square_roots(const GiNaC::ex& c, const GiNaC::ex& t, bool rational_bases = false);
 
 /// Half-integer powers of positive rationals in each product made one
-/// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221).
+/// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221)
+/// (square-free over the primes below 2^16; larger cofactors over the coprime base of e's
+/// radicands, scalar/small_primes.h: sqrt(3 P q^2) = q sqrt(3 P) next to sqrt(3 P)).
 GiNaC::ex canonical_radicals(const GiNaC::ex& e);
 
 /// simplify(e) of the language: at least what the zero test decides (radicals and

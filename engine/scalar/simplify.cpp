@@ -1,5 +1,6 @@
 // symrep/scalar/simplify.cpp -- tidy, trigonometric signs, arctangents, exp and log of scalars (scalar.h).
 #include "scalar/scalar.h"
+#include "scalar/small_primes.h"
 #include "scalar/equality.h"
 
 #include <algorithm>
@@ -155,20 +156,39 @@ bool has_rational_radical(const GiNaC::ex& x) {
     return false;
 }
 
-/// n = a^2 b with b free of the squares of primes below 2^16 (a larger cofactor
-/// stays in b unless it is a perfect square itself).
-void square_part(GiNaC::numeric n, GiNaC::numeric& a, GiNaC::numeric& b) {
+/// n = a^2 b with b free of the squares of primes below 2^16; the larger cofactor over the
+/// coprime base of the expression's radicands (`bases`, refine_cofactors), its squares taken
+/// out (without a base: out only when it is a perfect square itself).
+void square_part(GiNaC::numeric n, GiNaC::numeric& a, GiNaC::numeric& b, const cofactor_bases& bases) {
     a = 1;
     b = 1;
-    for (long p = 2; p < 65536 && p * p <= n; ++p) {
+    const small_factorization f = small_prime_factors(n);
+    for (const auto& [p, k] : f.factors) {
         const GiNaC::numeric pp(p);
-        int k = 0;
-        while (GiNaC::irem(n, pp).is_zero()) {
-            n = GiNaC::iquo(n, pp);
-            ++k;
-        }
         for (int i = 0; i + 1 < k; i += 2) a *= pp;
         if (k % 2) b *= pp;
+    }
+    n = f.cofactor;
+    if (n > 1 && !bases.empty()) {
+        // a product of the cofactors: over their (pairwise coprime) base
+        std::set<GiNaC::numeric, numeric_less> roots;
+        for (const auto& [c, over] : bases)
+            for (const auto& [q, k] : over) roots.insert(q);
+        GiNaC::numeric rest = n, inside = 1, outside = 1;
+        for (const GiNaC::numeric& q : roots) {
+            long k = 0;
+            while (GiNaC::irem(rest, q).is_zero()) {
+                rest = GiNaC::iquo(rest, q);
+                ++k;
+            }
+            for (long i = 0; i + 1 < k; i += 2) outside *= q;
+            if (k % 2) inside *= q;
+        }
+        if (rest == 1) {
+            a *= outside;
+            b *= inside;
+            return;
+        }
     }
     const GiNaC::numeric r = GiNaC::isqrt(n);
     if (r * r == n) a *= r;
@@ -182,6 +202,7 @@ void square_part(GiNaC::numeric n, GiNaC::numeric& a, GiNaC::numeric& b) {
 // b a square-free integer.
 GiNaC::ex canonical_radicals(const GiNaC::ex& e) {
     struct radicals : GiNaC::map_function {
+        cofactor_bases bases;
         static bool half_power(const GiNaC::ex& f) {
             if (!GiNaC::is_a<GiNaC::power>(f) || !GiNaC::is_a<GiNaC::numeric>(f.op(0)) ||
                 !GiNaC::is_a<GiNaC::numeric>(f.op(1)))
@@ -209,7 +230,7 @@ GiNaC::ex canonical_radicals(const GiNaC::ex& e) {
             if (!any) return std::nullopt;
             const GiNaC::numeric P = S.numer(), Q = S.denom();
             GiNaC::numeric a, sq;
-            square_part(P * Q, a, sq);  // sqrt(P/Q) = sqrt(P Q)/Q = a sqrt(sq)/Q
+            square_part(P * Q, a, sq, bases);  // sqrt(P/Q) = sqrt(P Q)/Q = a sqrt(sq)/Q
             return rest * outside * a / Q * GiNaC::sqrt(GiNaC::ex(sq));
         }
         GiNaC::ex operator()(const GiNaC::ex& x) override {
@@ -224,6 +245,7 @@ GiNaC::ex canonical_radicals(const GiNaC::ex& e) {
             return y;
         }
     } m;
+    m.bases = refine_cofactors(e);
     return m(e);
 }
 

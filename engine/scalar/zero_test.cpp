@@ -1,6 +1,8 @@
 // symrep/scalar/zero_test.cpp -- the exact zero test and the forms it reduces to (scalar.h).
 #include "scalar/scalar.h"
+#include "scalar/small_primes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -12,32 +14,37 @@
 
 namespace symrep {
 
+namespace {
+
+bool is_positive_rational(const GiNaC::ex& x) {
+    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
+           GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
+}
+
+}  // namespace
+
 GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
     struct expand_logs : GiNaC::map_function {
-        static GiNaC::ex log_of_integer(GiNaC::numeric N) {
+        cofactor_bases refined;
+        const std::vector<std::pair<GiNaC::numeric, long>>& over_bases(const GiNaC::numeric& c) {
+            auto it = refined.find(c);
+            if (it == refined.end()) it = refined.emplace(c, std::vector<std::pair<GiNaC::numeric, long>>{{c, 1}}).first;
+            return it->second;
+        }
+        GiNaC::ex log_of_integer(const GiNaC::numeric& N) {
             GiNaC::ex out = 0;
-            for (long p = 2; p < 65536 && N > 1; ++p) {
-                if (GiNaC::numeric(p) * p > N) break;
-                int k = 0;
-                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
-                if (k) out += k * GiNaC::log(GiNaC::ex(p));
-            }
-            if (N > 1) out += GiNaC::log(GiNaC::ex(N));
+            const small_factorization f = small_prime_factors(N);
+            for (const auto& [p, k] : f.factors) out += k * GiNaC::log(GiNaC::ex(p));
+            if (f.cofactor > 1)
+                for (const auto& [b, k] : over_bases(f.cofactor)) out += k * GiNaC::log(GiNaC::ex(b));
             return out;
         }
-        static bool is_positive_rational(const GiNaC::ex& x) {
-            return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
-                   GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
-        }
-        static GiNaC::ex power_of_integer(GiNaC::numeric N, const GiNaC::ex& q) {
+        GiNaC::ex power_of_integer(const GiNaC::numeric& N, const GiNaC::ex& q) {
             GiNaC::ex out = 1;
-            for (long p = 2; p < 65536 && N > 1; ++p) {
-                if (GiNaC::numeric(p) * p > N) break;
-                int k = 0;
-                while (GiNaC::irem(N, p).is_zero()) { N = GiNaC::iquo(N, p); ++k; }
-                if (k) out *= GiNaC::pow(GiNaC::ex(p), k * q);
-            }
-            if (N > 1) out *= GiNaC::pow(GiNaC::ex(N), q);
+            const small_factorization f = small_prime_factors(N);
+            for (const auto& [p, k] : f.factors) out *= GiNaC::pow(GiNaC::ex(p), k * q);
+            if (f.cofactor > 1)
+                for (const auto& [b, k] : over_bases(f.cofactor)) out *= GiNaC::pow(GiNaC::ex(b), k * q);
             return out;
         }
         GiNaC::ex operator()(const GiNaC::ex& x) override {
@@ -69,6 +76,7 @@ GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
             return out;
         }
     } m;
+    m.refined = refine_cofactors(e);
     return m(e);
 }
 
