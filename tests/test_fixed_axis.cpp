@@ -330,6 +330,8 @@ TEST(FixedAxis, ThePositionOfAChargeAtLongTimesAndInAFieldThatChangesSign) {
     agree(t, "B = -3/10 + 2 sin(7 t/10)", {"0.006", 1.0011892681366665, 1.9994020618586408, 3.0023950786060194});
     agree(t, "B = -3/10 + 2 sin(7 t/10)", {"2", 0.43779474916155875, 1.8697496297542389, 3.372687777684321});
     agree(t, "B = -3/10 + 2 sin(7 t/10)", {"12", -0.7154632733511337, -4.9843543852141785, -1.3617342110893615});
+}
+
 // (issue 27) A force across the axis whose dependence on t sits inside a literal,
 // cos(t) [1, 0, 0] read as [cos(t), 0, 0]: the t of the literal goes into Duhamel's integral
 // (terms_in_time), it is not a constant vector left outside (which gave [0.49998, 0.47423, 0]

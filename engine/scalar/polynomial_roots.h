@@ -10,7 +10,7 @@
 //   2 a real pair a +- s or a complex pair a +- i b (the quadratic formula),
 //   3 Cardano's form (one real root and a pair, or three real roots as cosines),
 // and a factor of degree >= 4 (which has no closed form usable here; Ferrari's quartic
-// formula is not implemented) is refused with closed_form_error naming its degree.
+// formula is not used) is refused with closed_form_error naming its degree.
 //
 // The square root of a pair is sign-free: sqrt(4 b^2) = 2 b for a real symbol b, whatever the
 // sign of b (the pair a +- b, or a +- i b, is the same set of roots for either sign), so that
