@@ -1,5 +1,5 @@
 // bench/differential/differential.cpp -- the differential test across the solvers
-// (tests/differential/harness.h) on any number of cases: the long run of issue 27.6.
+// (bench/differential/harness.h) on any number of cases: the long run of issue 27.6.
 //
 //   build/symrep_differential [CASES [SEED]]     (default 10000 cases per family, seed 1)
 //
@@ -9,7 +9,7 @@
 #include <iostream>
 #include <map>
 
-#include "../../tests/differential/harness.h"
+#include "harness.h"
 
 int main(int argc, char** argv) {
     using namespace symrep::differential;

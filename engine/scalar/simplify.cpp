@@ -490,10 +490,16 @@ void set_message_printer(expression_printer p) { g_message_printer = p; }
 
 std::string message_text(const GiNaC::ex& e, std::size_t max) {
     std::string s;
-    try {
-        if (g_message_printer) s = g_message_printer(e);
-    } catch (const std::exception&) {
-        s.clear();  // an expression the canonical printer refuses: GiNaC's text below
+    // the canonical printer may itself refuse e with a message that quotes e: GiNaC's text there
+    static thread_local bool printing = false;
+    if (g_message_printer && !printing) {
+        printing = true;
+        try {
+            s = g_message_printer(e);
+        } catch (const std::exception&) {
+            s.clear();  // an expression the canonical printer refuses: GiNaC's text below
+        }
+        printing = false;
     }
     if (s.empty()) {
         std::ostringstream os;

@@ -1,4 +1,4 @@
-// tests/differential/harness.h -- the differential test across the solvers (issue 27.6).
+// bench/differential/harness.h -- the differential test across the solvers (issue 27.6).
 //
 // Random problems are drawn from the families the engine solves; each is given to
 // symrep as a user writes it (a session, the language), and what symrep prints
@@ -165,12 +165,15 @@ struct runner {
 
 using state = std::vector<double>;
 
-/// y(T) of y' = f(t, y), y(0) = y0, by runge_kutta_fehlberg78 with abs and rel tolerance 1e-13
-/// (the data are of size 1, see the scaling above): its global error over |w| t <= 20 and
-/// t <= 10 stays below ~1e-11 relative (checked against closed forms in test_differential.cpp).
+/// y(T) of y' = f(t, y), y(0) = y0, by odeint's Bulirsch-Stoer extrapolation with abs and rel
+/// tolerance 1e-13 (the data are of size 1, see the scaling above): its global error over
+/// |w| t <= 20 and t <= 10 stays below ~1e-11 relative (checked against closed forms in
+/// test_differential.cpp). Not Fehlberg 7(8): its error estimate vanishes where the forcing
+/// alone drives a component (y' = g(t): stages 12 and 13 repeat 1 and 11), and its step then
+/// grows without control (r'' = cos 3t came out 3.04 for 0.103 at t = 8.9).
 inline state integrate(const std::function<void(const state&, state&, double)>& f, state y0, double T) {
     using namespace boost::numeric::odeint;
-    auto stepper = make_controlled(1e-13, 1e-13, runge_kutta_fehlberg78<state>());
+    bulirsch_stoer<state> stepper(1e-13, 1e-13);
     integrate_adaptive(stepper, f, y0, 0.0, T, T / 200);
     return y0;
 }
@@ -252,7 +255,7 @@ inline std::vector<double> constant_w_reference(const constant_w_case& c, const 
 /// values, and on every fourth case solve(P, values) as well. Tolerance 1e-9 relative to the
 /// norm of r(T) or of the data's scale (the reference is good to ~1e-11; a wrong closed form
 /// is off by O(1)).
-inline std::vector<outcome> constant_w_family(unsigned seed, int n) {
+inline std::vector<outcome> constant_w_family(unsigned seed, int n, bool scenes = true) {
     std::mt19937 gen(seed);
     std::vector<outcome> out;
     runner R;
@@ -293,7 +296,7 @@ inline std::vector<outcome> constant_w_family(unsigned seed, int n) {
             }
             const std::vector<double> a = numbers_of(R.value("eval(s, " + values + ", t = " + times_text + ")"));
             o.difference = relative(a, ref, floor);
-            if (i % 4 == 0 && o.difference <= o.tolerance) {
+            if (scenes && i % 4 == 0 && o.difference <= o.tolerance) {
                 o.statements = "P := " + c.problem + "\neval(solve(P, " + values + "), " + values +
                                ", t = " + times_text + ")";
                 const std::vector<double> b =
@@ -452,11 +455,11 @@ inline quasi_term draw_quasi_term(std::mt19937& gen, bool decaying) {
 /// integer coefficients (so resonance with the input occurs), t in [0.5, 3]. Tolerance 1e-8
 /// relative to the norm of the solution's size along the way (unstable systems grow like
 /// e^(6 t); the reference keeps 1e-11 of the largest value).
-inline std::vector<outcome> response_family(unsigned seed, int n) {
+inline std::vector<outcome> response_family(unsigned seed, int n, int max_order = 3) {
     std::mt19937 gen(seed);
     std::vector<outcome> out;
     runner R;
-    std::uniform_int_distribution<int> coef(-3, 3), order(2, 3);
+    std::uniform_int_distribution<int> coef(-3, 3), order(2, max_order);
     std::uniform_real_distribution<double> times(0.5, 3);
     for (int i = 0; i < n; ++i) {
         outcome o;
@@ -475,8 +478,8 @@ inline std::vector<outcome> response_family(unsigned seed, int n) {
             for (std::size_t j = 0; j < v.size(); ++j) s += (j ? ", " : "") + std::to_string(v[j]);
             return s + "]";
         };
-        const std::string call = "response(" + list(a) + ", " + list(b) + ", " + f.text() + ", t)";
-        o.statements = "x := " + call + "[2]\neval(x, [], t = " + decimal(T) + ")";
+        const std::string call = "response(" + list(a) + ", " + list(b) + ", " + f.text() + ", t)";  // [1]: zero_state
+        o.statements = "x := " + call + "[1]\neval(x, [], t = " + decimal(T) + ")";
         auto rhs = [&](const state& y, state& dy, double t) {
             double u = 0;
             for (int j = 0; j <= p; ++j) u += b[j] * f.derivative(p - j, t);
@@ -488,7 +491,7 @@ inline std::vector<outcome> response_family(unsigned seed, int n) {
         const state y = integrate(rhs, state(m, 0.0), T);
         trace(o.statements);
         try {
-            R.run("x := " + call + "[2]");
+            R.run("x := " + call + "[1]");
             o.difference = relative(numbers_of(R.value("eval(x, [], t = " + decimal(T) + ")")), {y[0]}, 1e-6);
         } catch (const std::exception& e) {
             o.difference = -1;
@@ -662,10 +665,9 @@ inline std::vector<outcome> algebra_exp_family(unsigned seed, int n) {
 /// Every family, `n` cases each (the fixed-axis and Laplace families, slower, n/4 and n/2).
 inline std::vector<outcome> all_families(unsigned seed, int n) {
     std::vector<outcome> out;
-    for (auto* family : {constant_w_family, response_family, algebra_exp_family}) {
-        auto r = family(seed++, n);
+    for (auto r : {constant_w_family(seed, n), response_family(seed + 1, n), algebra_exp_family(seed + 2, n)})
         out.insert(out.end(), r.begin(), r.end());
-    }
+    seed += 3;
     auto l = laplace_family(seed++, std::max(1, n / 2));
     out.insert(out.end(), l.begin(), l.end());
     auto f = fixed_axis_family(seed++, std::max(1, n / 4));
