@@ -224,7 +224,10 @@ chain_result integrate_chain(const chain_integrand& g, std::size_t n, double a, 
             // rounding noise of the integrand (a cancellation such as 3/4 - 3 cos(tau)/4 near 0):
             // the halving did not shrink the difference, which is far below the panel's own size
             // (an integrand of 31 points resolved to 1e-3 shrinks it by 1e9 at a halving)
-            const bool stalled = halved && d > parent[j] / 8 && d <= 1e-3 * fine.l1[j];
+            // A panel wider than 1e-3 of [a, b] is never taken as noise: a smooth integrand not yet
+            // resolved there (e^(-u/2) over [0, 120]) shrinks its difference slowly at first.
+            const bool stalled = halved && std::fabs(h) <= 1e-3 * length && d > parent[j] / 8 &&
+                                 d <= 1e-3 * fine.l1[j];
             if (!stalled) accept = false;
             forced = true;
         }
