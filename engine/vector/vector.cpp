@@ -37,8 +37,8 @@ struct name_entries {
     bool has_primary = false;  // list.front() was made by vector_symbol()
 };
 
-std::mutex& reg_mutex() {
-    static std::mutex m;
+std::recursive_mutex& reg_mutex() {  // recursive: a message built under it prints vectors (message_text)
+    static std::recursive_mutex m;
     return m;
 }
 std::map<std::string, name_entries>& registry() {
@@ -97,7 +97,7 @@ void make_timed(entry& en, const ex& t, const char* who) {
 
 ex vector_symbol(const std::string& name) {
     check_name("vector_symbol", name);
-    std::lock_guard<std::mutex> lock(reg_mutex());
+    std::lock_guard<std::recursive_mutex> lock(reg_mutex());
     auto& r = registry();
     auto it = r.find(name);
     if (it != r.end() && it->second.has_primary) return it->second.list.front().sym;
@@ -108,7 +108,7 @@ void register_vector(const ex& sym) {
     if (!is_a<GiNaC::symbol>(sym))
         throw type_error("register_vector: " + message_text(sym) + " is not a symbol");
     check_name("register_vector", ex_to<GiNaC::symbol>(sym).get_name());
-    std::lock_guard<std::mutex> lock(reg_mutex());
+    std::lock_guard<std::recursive_mutex> lock(reg_mutex());
     if (!find_entry(sym)) add_entry(sym, false);
 }
 
@@ -116,7 +116,7 @@ ex vector_function(const std::string& name, const ex& t) {
     if (!is_a<GiNaC::symbol>(t))
         throw type_error("vector_function: the variable " + message_text(t) + " is not a symbol");
     const ex r = vector_symbol(name);
-    std::lock_guard<std::mutex> lock(reg_mutex());
+    std::lock_guard<std::recursive_mutex> lock(reg_mutex());
     make_timed(*find_entry(r), t, "vector_function");
     return r;
 }
@@ -125,12 +125,12 @@ void register_vector_function(const ex& sym, const ex& t) {
     if (!is_a<GiNaC::symbol>(t))
         throw type_error("register_vector_function: the variable " + message_text(t) + " is not a symbol");
     register_vector(sym);
-    std::lock_guard<std::mutex> lock(reg_mutex());
+    std::lock_guard<std::recursive_mutex> lock(reg_mutex());
     make_timed(*find_entry(sym), t, "register_vector_function");
 }
 
 ex derivative(const ex& r) {
-    std::lock_guard<std::mutex> lock(reg_mutex());
+    std::lock_guard<std::recursive_mutex> lock(reg_mutex());
     entry* en = find_entry(r);
     if (!en || !en->timed)
         throw type_error("derivative: " + message_text(r) + " is not a vector function (declare it with vector_function)");
@@ -145,7 +145,7 @@ ex derivative(const ex& r) {
 
 bool is_vector_symbol(const ex& e) {
     if (!is_a<GiNaC::symbol>(e)) return false;
-    std::lock_guard<std::mutex> lock(reg_mutex());
+    std::lock_guard<std::recursive_mutex> lock(reg_mutex());
     return find_entry(e) != nullptr;
 }
 
@@ -415,7 +415,7 @@ ex diff_t(const ex& e, const ex& t) {
     for (const ex& r : vector_symbols(e)) {
         bool timed;
         {
-            std::lock_guard<std::mutex> lock(reg_mutex());
+            std::lock_guard<std::recursive_mutex> lock(reg_mutex());
             entry* en = find_entry(r);
             timed = en && en->timed && en->t.is_equal(t);
         }
