@@ -16,43 +16,6 @@ namespace {
 
 std::string str(const ex& e) { return message_text(e); }
 
-// Replaces non-rational atoms (functions, constants such as Pi, non-integer
-// powers) by temporary symbols so that factor() sees a polynomial over Q(symbols).
-ex atomize(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back) {
-    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e)) return e;
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
-        (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())) {
-        GiNaC::exvector ops;
-        for (std::size_t i = 0; i < e.nops(); ++i) ops.push_back(atomize(e.op(i), seen, back));
-        if (GiNaC::is_a<GiNaC::add>(e)) return GiNaC::add(ops);
-        if (GiNaC::is_a<GiNaC::mul>(e)) return GiNaC::mul(ops);
-        return GiNaC::pow(ops[0], ops[1]);
-    }
-    auto it = seen.find(e);
-    if (it != seen.end()) return it->second;
-    const GiNaC::symbol s;
-    seen.emplace(e, s);
-    back[s] = e;
-    return s;
-}
-
-std::vector<std::pair<ex, unsigned>> factors_of(const ex& f) {
-    std::vector<std::pair<ex, unsigned>> out;
-    auto take = [&](const ex& u) {
-        if (GiNaC::is_a<GiNaC::power>(u) && GiNaC::is_a<GiNaC::numeric>(u.op(1)) &&
-            GiNaC::ex_to<GiNaC::numeric>(u.op(1)).is_pos_integer())
-            out.emplace_back(u.op(0), GiNaC::ex_to<GiNaC::numeric>(u.op(1)).to_int());
-        else
-            out.emplace_back(u, 1u);
-    };
-    if (GiNaC::is_a<GiNaC::mul>(f))
-        for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i));
-    else
-        take(f);
-    return out;
-}
-
 // sqrt of a polynomial, exact on its square factors: sqrt(4 (w0 - W)^2) = 2 (w0 - W)
 // (up to a sign, which does not matter for a root pair).
 ex sqrt_poly(const ex& e) {

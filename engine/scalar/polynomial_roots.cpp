@@ -27,44 +27,6 @@ bool has_radical(const ex& e) {
     return false;
 }
 
-// The non-rational atoms of e (functions such as log(2), constants such as pi, non-integer
-// powers such as sqrt(2)) replaced by temporary symbols (symbol -> atom recorded in back), so
-// that e is a polynomial over Q(symbols) that factor() understands.
-ex atomize(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back) {
-    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e)) return e;
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
-        (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())) {
-        GiNaC::exvector ops;
-        for (std::size_t i = 0; i < e.nops(); ++i) ops.push_back(atomize(e.op(i), seen, back));
-        if (GiNaC::is_a<GiNaC::add>(e)) return GiNaC::add(ops);
-        if (GiNaC::is_a<GiNaC::mul>(e)) return GiNaC::mul(ops);
-        return GiNaC::pow(ops[0], ops[1]);
-    }
-    auto it = seen.find(e);
-    if (it != seen.end()) return it->second;
-    const GiNaC::symbol s;
-    seen.emplace(e, s);
-    back[s] = e;
-    return s;
-}
-
-// f as its factors with multiplicities (a power with a positive integer exponent split).
-std::vector<std::pair<ex, unsigned>> factors_of(const ex& f) {
-    std::vector<std::pair<ex, unsigned>> out;
-    auto take = [&](const ex& u) {
-        if (GiNaC::is_a<GiNaC::power>(u) && GiNaC::is_a<GiNaC::numeric>(u.op(1)) &&
-            GiNaC::ex_to<GiNaC::numeric>(u.op(1)).is_pos_integer())
-            out.emplace_back(u.op(0), unsigned(GiNaC::ex_to<GiNaC::numeric>(u.op(1)).to_int()));
-        else
-            out.emplace_back(u, 1u);
-    };
-    if (GiNaC::is_a<GiNaC::mul>(f))
-        for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i));
-    else
-        take(f);
-    return out;
-}
 
 // b or -b, whichever is positive at the generic point (b itself when that is not decided):
 // the sign of a square root's factor does not depend on GiNaC's term order.
@@ -142,6 +104,45 @@ std::vector<polynomial_root> cubic_roots(const ex& f, const GiNaC::symbol& X, un
 }
 
 }  // namespace
+
+// The non-rational atoms of e (functions such as log(2), constants such as pi, non-integer
+// powers such as sqrt(2)) replaced by temporary symbols (symbol -> atom recorded in back), so
+// that e is a polynomial over Q(symbols) that factor() understands.
+ex atomize(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back) {
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e)) return e;
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
+        (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())) {
+        GiNaC::exvector ops;
+        for (std::size_t i = 0; i < e.nops(); ++i) ops.push_back(atomize(e.op(i), seen, back));
+        if (GiNaC::is_a<GiNaC::add>(e)) return GiNaC::add(ops);
+        if (GiNaC::is_a<GiNaC::mul>(e)) return GiNaC::mul(ops);
+        return GiNaC::pow(ops[0], ops[1]);
+    }
+    auto it = seen.find(e);
+    if (it != seen.end()) return it->second;
+    const GiNaC::symbol s;
+    seen.emplace(e, s);
+    back[s] = e;
+    return s;
+}
+
+// f as its factors with multiplicities (a power with a positive integer exponent split).
+std::vector<std::pair<ex, unsigned>> factors_of(const ex& f) {
+    std::vector<std::pair<ex, unsigned>> out;
+    auto take = [&](const ex& u) {
+        if (GiNaC::is_a<GiNaC::power>(u) && GiNaC::is_a<GiNaC::numeric>(u.op(1)) &&
+            GiNaC::ex_to<GiNaC::numeric>(u.op(1)).is_pos_integer())
+            out.emplace_back(u.op(0), unsigned(GiNaC::ex_to<GiNaC::numeric>(u.op(1)).to_int()));
+        else
+            out.emplace_back(u, 1u);
+    };
+    if (GiNaC::is_a<GiNaC::mul>(f))
+        for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i));
+    else
+        take(f);
+    return out;
+}
 
 int sign_generic(const ex& x) {
     const ex e = tidy(x);

@@ -18,7 +18,9 @@
 // the one positive at a fixed generic point is taken (deterministic output).
 #pragma once
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -29,6 +31,13 @@ namespace symrep {
 /// numerically (evalf); with free symbols, an expression known >= 0 (a^2 for a real symbol a)
 /// and not 0 is read as positive (the generic reading of the algebra layer).
 int sign_generic(const GiNaC::ex& x);
+
+/// e with its non-rational atoms (functions such as log(2), constants such as pi, non-integer
+/// powers such as sqrt(2)) replaced by temporary symbols (recorded in `back`, reused through
+/// `seen`), so that e is a polynomial over Q(symbols) that GiNaC's factor() understands.
+GiNaC::ex atomize(const GiNaC::ex& e, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back);
+/// f (a product, as factor() returns it) as its factors with multiplicities.
+std::vector<std::pair<GiNaC::ex, unsigned>> factors_of(const GiNaC::ex& f);
 
 /// The irreducible factors of q over Q(atoms) that contain X, each monic in X, with their
 /// multiplicities (constant content dropped). The order is that of GiNaC's factor().
