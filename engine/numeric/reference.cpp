@@ -24,14 +24,6 @@ GiNaC::numeric exact_rational(double x) {
 
 namespace {
 
-/// Sets GiNaC::Digits for one scope.
-struct digits_scope {
-    long saved;
-    explicit digits_scope(long d) : saved(GiNaC::Digits) { GiNaC::Digits = d; }
-    ~digits_scope() { GiNaC::Digits = saved; }
-    digits_scope(const digits_scope&) = delete;
-    digits_scope& operator=(const digits_scope&) = delete;
-};
 
 /// The printed expression, cut for a message.
 std::string bounded(const GiNaC::ex& e) {

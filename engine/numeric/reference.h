@@ -19,6 +19,15 @@
 
 namespace symrep::num {
 
+/// Sets GiNaC::Digits for one scope (restored when it ends, also by an exception).
+struct digits_scope {
+    long saved;
+    explicit digits_scope(long d) : saved(GiNaC::Digits) { GiNaC::Digits = d; }
+    ~digits_scope() { GiNaC::Digits = saved; }
+    digits_scope(const digits_scope&) = delete;
+    digits_scope& operator=(const digits_scope&) = delete;
+};
+
 /// The exact rational value of a double (finite; throws domain_error for inf/nan).
 GiNaC::numeric exact_rational(double x);
 

@@ -24,13 +24,6 @@ using GiNaC::numeric;
 
 namespace {
 
-struct digits_scope {
-    long saved;
-    explicit digits_scope(long d) : saved(GiNaC::Digits) { GiNaC::Digits = d; }
-    ~digits_scope() { GiNaC::Digits = saved; }
-    digits_scope(const digits_scope&) = delete;
-    digits_scope& operator=(const digits_scope&) = delete;
-};
 
 numeric to_float(const numeric& x) { return GiNaC::ex_to<numeric>(ex(x).evalf()); }
 
@@ -73,7 +66,7 @@ struct numeric_result {
 }
 
 numeric_result compute(const std::vector<numeric>& exact_c, const numeric& h_exact, long digits) {
-    const digits_scope scope(digits);
+    const num::digits_scope scope(digits);
     const std::size_t n = exact_c.size() - 1;
     std::vector<numeric> c;
     for (const numeric& x : exact_c) c.push_back(to_float(x));
