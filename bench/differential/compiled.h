@@ -52,22 +52,25 @@ inline std::vector<outcome> compiled_family(unsigned seed, int n) {
                                    (c.foucault ? ", w0 = " + (exact_numbers ? exact(w0) : decimal(w0)) : "") + "]";
         const std::vector<double> at{T / 1000, T / 7, T / 2, T};
         std::vector<std::vector<double>> refs;
-        for (double tk : at) {
-            std::vector<double> ref = constant_w_reference(c, w, w0, g0, r00, v00, tk);
-            for (double& x : ref) x *= S;
-            refs.push_back(ref);
-        }
+        outcome st, many, plain;
+        const bool referenced = reference(st, [&] {
+            for (double tk : at) {
+                std::vector<double> ref = constant_w_reference(c, w, w0, g0, r00, v00, tk);
+                for (double& x : ref) x *= S;
+                refs.push_back(ref);
+            }
+        });
         const double floor = 1e-3 * S;
         const std::string statements = "P := " + c.problem + "\ns := solve(P)\n(C++) the components of s with " +
                                        values + " put in exactly, compiled in t, at t = " + decimal(at[0]) + ", " +
                                        decimal(at[1]) + ", " + decimal(at[2]) + ", " + decimal(at[3]);
         trace(statements);
-        outcome st, many, plain;
         st.family = "compiled: stable eval", st.tolerance = 1e-9;
         many.family = "compiled: stable eval_many", many.tolerance = 2e-6;
         plain.family = "compiled: plain eval_many", plain.tolerance = 1e-6;
         st.statements = many.statements = plain.statements = statements;
         try {
+            if (!referenced) throw std::runtime_error(st.error);
             if (solved_for != c.problem) {
                 R.run("P := " + c.problem + "\ns := solve(P)");
                 solved_for = c.problem;
