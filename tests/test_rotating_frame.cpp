@@ -237,6 +237,24 @@ TEST(Kepler, FullDoubleAccuracyAgainstTheFiftyDigitReference) {
     }
 }
 
+// The problem is scale-free: r/L solves it with mu/L^3 for r0/L, v0/L at the same t. Kepler's
+// equation converged to an absolute 1e-15 in chi (units sqrt(length)) until issue 27.6: at
+// |r0| = 1e-30 the orbit was 2.5e-10 off, at 1e-40 1.6e-3, and below 1e-77 or above 1e77
+// |r0 x v0|^2 left the double range and the orbit was refused as radial (found by the
+// differential test).
+TEST(Kepler, EveryLengthScaleIsAsAccurate) {
+    for (const orbit_case& c : orbits)
+        for (double t : {0.3, 1.12, 7.0}) {
+            const num::kepler_state k1 = num::kepler_propagate(1.0, c.r0, c.v0, t);
+            for (int e = -100; e <= 100; e += 10) {
+                const double L = std::pow(10.0, e);
+                const num::kepler_state k = num::kepler_propagate(L * L * L, L * c.r0, L * c.v0, t);
+                EXPECT_LT((k.position / L - k1.position).norm(), 1e-13 * k1.position.norm()) << c.name << " " << e;
+                EXPECT_LT((k.velocity / L - k1.velocity).norm(), 1e-13 * k1.velocity.norm()) << c.name << " " << e;
+            }
+        }
+}
+
 TEST(Kepler, BadInputIsRefused) {
     EXPECT_THROW(num::kepler_propagate(0.0, Vector3d(1, 0, 0), Vector3d(0, 1, 0), 1.0), domain_error);
     EXPECT_THROW(num::kepler_propagate(1.0, Vector3d(0, 0, 0), Vector3d(0, 1, 0), 1.0), domain_error);

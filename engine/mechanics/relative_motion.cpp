@@ -82,7 +82,7 @@ std::vector<relative_state> tschauner_hempel(double mu, const Eigen::Vector3d& R
     y0.insert(y0.end(), start.velocity.data(), start.velocity.data() + 3);
     num::integration_options o;
     o.rel_tol = rel_tol;
-    o.abs_tol = rel_tol * std::max(start.position.norm(), 1e-300);
+    o.abs_tol = rel_tol * std::max(start.position.stableNorm(), 1e-300);  // norm() overflows at 1e155
     const num::integration_result res = num::integrate(rhs, 0.0, y0, times, o);
     std::vector<relative_state> out;
     for (std::size_t k = 0; k < times.size(); ++k) {

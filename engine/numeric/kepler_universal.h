@@ -96,9 +96,13 @@ kepler_state_of<Real> kepler_propagate_of(const Real& mu, const triple_of<Real>&
     if (!(mu > 0)) throw domain_error("kepler: mu must be a positive number");
     const Real r0 = sqrt(dot(r0v, r0v)), vv = dot(v0, v0);
     if (r0 == 0) throw domain_error("kepler: the initial position is the centre of the field (|r0| = 0)");
-    const triple_of<Real> h = cross(r0v, v0);
     const Real eps = std::numeric_limits<Real>::epsilon();
-    if (vv == 0 || sqrt(dot(h, h)) <= 10 * eps * r0 * sqrt(vv))
+    // r0 x v0 of the unit vectors: |r0 x v0|^2 itself leaves the range of Real first (it
+    // scales as length^4: 0 at |r0| = 1e-86, a radial orbit refused until issue 27.6)
+    triple_of<Real> ur = r0v, uv = v0;
+    for (int i = 0; i < 3; ++i) ur[i] /= r0, uv[i] /= sqrt(vv);
+    const triple_of<Real> h = cross(ur, uv);
+    if (vv == 0 || sqrt(dot(h, h)) <= 10 * eps)
         throw domain_error("kepler: a radial orbit (r0 x v0 = 0) falls into the centre of the field or comes out of "
                            "it; it is not solved here");
     const Real smu = sqrt(mu), sigma0 = dot(r0v, v0) / smu, alpha = 2 / r0 - vv / mu;
@@ -140,7 +144,9 @@ kepler_state_of<Real> kepler_propagate_of(const Real& mu, const triple_of<Real>&
         const Real den = dF + (dF >= 0 ? disc : Real(-disc));
         const Real delta = den != 0 ? Real(n * f / den) : Real(f / dF);
         chi -= delta;
-        if (abs(delta) <= 10 * eps * (abs(chi) > 1 ? abs(chi) : Real(1))) {
+        // relative to chi itself: chi has the unit sqrt(length), so an absolute floor (1 until
+        // issue 27.6) accepted the first step at small lengths (|r0| = 1e-30: 2.5e-10 off)
+        if (abs(delta) <= 10 * eps * abs(chi)) {
             converged = true;
             break;
         }
