@@ -1,13 +1,17 @@
 // bench/differential/differential.cpp -- the differential test across the solvers
 // (bench/differential/harness.h) on any number of cases: the long run of issue 27.6.
 //
-//   build/symrep_differential [CASES [SEED]]     (default 10000 cases per family, seed 1)
+//   build/symrep_differential [CASES [SEED [FAMILY]]]   (default 10000 cases per family, seed 1, all)
+//
+// FAMILY runs one family alone, CASES cases of it: constant_w, fixed_axis, response, laplace
+// (the forward and inverse pairs), algebra_exp.
 //
 // Prints the cases and disagreements per family, and each disagreement with what symrep was
 // given; exits 1 if any case disagreed. docs/testing.md records the last long run.
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <string>
 
 #include "harness.h"
 
@@ -15,7 +19,19 @@ int main(int argc, char** argv) {
     using namespace symrep::differential;
     const int n = argc > 1 ? std::atoi(argv[1]) : 10000;
     const unsigned seed = argc > 2 ? unsigned(std::atol(argv[2])) : 1;
-    const std::vector<outcome> cases = all_families(seed, n);
+    const std::string family = argc > 3 ? argv[3] : "";
+    std::vector<outcome> cases;
+    if (family.empty()) cases = all_families(seed, n);
+    else if (family == "constant_w") cases = constant_w_family(seed, n);
+    else if (family == "fixed_axis") cases = fixed_axis_family(seed, n);
+    else if (family == "response") cases = response_family(seed, n);
+    else if (family == "laplace") cases = laplace_family(seed, n);
+    else if (family == "algebra_exp") cases = algebra_exp_family(seed, n);
+    else {
+        std::cerr << "symrep_differential: unknown family " << family
+                  << " (constant_w, fixed_axis, response, laplace, algebra_exp)\n";
+        return 2;
+    }
     std::map<std::string, std::pair<int, int>> tally;
     int failed = 0;
     for (const outcome& o : cases) {
