@@ -420,10 +420,11 @@ long magnitude_exponent(const ex& e, const ex& t) {
 // 10^M (M = magnitude_exponent: 1/|w|^4 (w x (g x w)) for small |w|) cancel down to the size of
 // the data, 10^scale (the smallest value given), so each number keeps Digits + M - scale + 2
 // digits: the rounding is 10^-(Digits + 2) of the data's size at t = 1, and T^k times that at
-// t = T for the t^k of the terms (1e-18 at T = 10 with k = 4 and Digits = 20). Before issue 27 the digits were Digits plus the exponent of
-// the largest number only when above 1, read as a double clamped at 1e300: with |w| = 1e-270 and
-// data of 1e-200 (terms of 1e340 cancelling to 1e-200) the result was noise, and with data of
-// 1e-200 and |w| = 1e-50 (terms of 1e-100) no digit was added. Refused beyond 20000 digits.
+// t = T for the t^k of the terms (1e-18 at T = 10 with k = 4 and Digits = 20). Before issue
+// 27 the digits were Digits plus the exponent of the largest number only when above 1, read as
+// a double clamped at 1e300: with |w| = 1e-270 and data of 1e-200 (terms of 1e340 cancelling
+// to 1e-200) the result was noise, and with data of 1e-200 and |w| = 1e-50 (terms of 1e-100)
+// no digit was added. Refused beyond 20000 digits.
 ex evaluate_with_guard(const ex& x, const ex& t, long scale) {
     const long saved = GiNaC::Digits;
     const long M = magnitude_exponent(x, t);
