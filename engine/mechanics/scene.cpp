@@ -7,6 +7,7 @@
 #include "numeric/quadrature.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <functional>
 
@@ -363,38 +364,100 @@ std::string scene_model::report() const {
 
 namespace {
 
-// x (exact) evaluated in floating point with Digits plus the decimal exponent of its largest
-// coefficient (outside function arguments): terms of that size cancel to the size of the data
-// (1/|w|^3 (|w| t - sin(|w| t)) for small |w|), so that many more digits keep Digits in the result.
-ex evaluate_with_guard(const ex& x) {
-    const long saved = GiNaC::Digits;
-    struct restore {
-        long d;
-        ~restore() { GiNaC::Digits = d; }
-    } r{saved};
-    long extra = 0;
-    GiNaC::Digits = 30;
-    const ex rough = GiNaC::evalf(x);
-    struct largest : GiNaC::map_function {
-        long e = 0;
-        ex operator()(const ex& y) override {
-            if (GiNaC::is_a<GiNaC::function>(y)) return y;
-            if (GiNaC::is_a<GiNaC::numeric>(y)) {
-                const GiNaC::numeric a = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(y));
-                if (a > 1) {
-                    const double d = a > GiNaC::numeric("1e300") ? 1e300 : a.to_double();  // no overflow to inf
-                    e = std::max(e, long(std::ceil(std::log10(std::max(1.0, d)))));
-                }
-                return y;
-            }
-            return y.map(*this);
+// An upper bound of log10 of the magnitude of e (the sum of the absolute values of its terms,
+// solution_witness.h) at t = 1, |cos| and |sin| taken as 1: sums by their largest term, so that
+// a sum that cancels counts with the size of its terms; a vector by its largest component.
+// Exact numbers (no float), any size.
+// Symbol-free parts other than sums are evaluated (30 digits); LONG_MIN for 0.
+long magnitude_exponent(const ex& e, const ex& t) {
+    if (e.is_zero()) return LONG_MIN;
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::matrix>(e) || GiNaC::is_a<GiNaC::lst>(e)) {
+        long m = LONG_MIN;
+        for (std::size_t i = 0; i < e.nops(); ++i) m = std::max(m, magnitude_exponent(e.op(i), t));
+        return m;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        long m = 0;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const long f = magnitude_exponent(e.op(i), t);
+            if (f == LONG_MIN) return LONG_MIN;
+            m += f;
         }
-    } f;
-    f(rough);
-    extra = std::min(f.e, 1000L);
-    const long digits = saved + extra + (extra > 0 ? 2 : 0);
-    GiNaC::Digits = digits + 10;
+        return m;
+    }
+    if (e.is_equal(t)) return 0;
+    if (!e.has(t)) {
+        const num::digits_scope d(30);
+        ex x;
+        try {
+            x = GiNaC::evalf(e);
+        } catch (const std::exception&) {
+            return 0;
+        }
+        if (GiNaC::is_a<GiNaC::numeric>(x) && !GiNaC::ex_to<GiNaC::numeric>(x).is_zero()) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(x);
+            return num::decimal_exponent(GiNaC::abs(n.real()) + GiNaC::abs(n.imag())) + 1;
+        }
+        return 0;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_pos_integer()) {
+        const long b = magnitude_exponent(e.op(0), t);
+        return b == LONG_MIN ? b : b * GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_long();
+    }
+    if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1 && GiNaC::ex_to<GiNaC::function>(e).get_name() == "exp") {
+        // exp(a t) at t = 1 (the size its coefficient multiplies; at least 1)
+        const num::digits_scope d(30);
+        const ex a = GiNaC::evalf(GiNaC::real_part(e.op(0).subs(t == 1)));
+        if (GiNaC::is_a<GiNaC::numeric>(a) && GiNaC::ex_to<GiNaC::numeric>(a).is_real())
+            return std::max(0L, long(std::floor(GiNaC::ex_to<GiNaC::numeric>(a).to_double() / std::log(10.0))) + 1);
+    }
+    return 0;  // sin, cos of a real argument, t^k at t = 1
+}
+
+// The exact closed form x (the values put in as exact numbers) evaluated in floating point,
+// each number rounded to the digits that keep Digits of the result: terms of the size
+// 10^M (M = magnitude_exponent: 1/|w|^4 (w x (g x w)) for small |w|) cancel down to the size of
+// the data, 10^scale (the smallest value given), so each number keeps Digits + M - scale + 2
+// digits: the rounding is 10^-(Digits + 2) of the data's size at t = 1, and T^k times that at
+// t = T for the t^k of the terms (1e-18 at T = 10 with k = 4 and Digits = 20). Before issue
+// 27 the digits were Digits plus the exponent of the largest number only when above 1, read as
+// a double clamped at 1e300: with |w| = 1e-270 and data of 1e-200 (terms of 1e340 cancelling
+// to 1e-200) the result was noise, and with data of 1e-200 and |w| = 1e-50 (terms of 1e-100)
+// no digit was added. Refused beyond 20000 digits.
+ex evaluate_with_guard(const ex& x, const ex& t, long scale) {
+    const long saved = GiNaC::Digits;
+    const long M = magnitude_exponent(x, t);
+    const long extra = M == LONG_MIN || M <= scale ? 0 : M - scale + 2;
+    const long digits = saved + extra;
+    if (digits > 20000)
+        throw domain_error("the closed form of the scene cancels about " + std::to_string(extra) +
+                           " decimal digits at these values (terms of 10^" + std::to_string(M) +
+                           " for data of 10^" + std::to_string(scale) +
+                           "): too many to print it in floating point; solve(P) and eval at the times "
+                           "evaluate it, or give the values as exact numbers");
+    const num::digits_scope d(digits + 10);
     return num::round_digits(GiNaC::evalf(x), digits);
+}
+
+// floor(log10) of the smallest nonzero size among the values (of a vector its largest
+// component): the scale of the data a scene's result is measured against; 0 without one.
+long values_scale(const parameter_values& v) {
+    long s = LONG_MAX;
+    auto note = [&](const ex& x) {
+        const num::digits_scope d(30);
+        GiNaC::numeric size = 0;
+        for (std::size_t i = 0; i < (is_vector_literal(x) ? 3u : 1u); ++i) {
+            const ex y = GiNaC::evalf(is_vector_literal(x) ? x.op(i) : x);
+            if (GiNaC::is_a<GiNaC::numeric>(y))
+                size = std::max(size, GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(y).real()) +
+                                          GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(y).imag()));
+        }
+        if (!size.is_zero()) s = std::min(s, num::decimal_exponent(size));
+    };
+    for (const auto& [k, x] : v.vectors) note(x);
+    for (const auto& [k, x] : v.scalars) note(x);
+    return s == LONG_MAX ? 0 : s;
 }
 
 }  // namespace
@@ -424,7 +487,10 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
         if (closed_turning) require_witness(P, *closed_turning);
         out.model_solution = closed_turning ? *closed_turning : solve(P);
         out.x = put_values(out.model_solution, exact);
-        if (floats) out.x = normalize_trig_signs(GiNaC::evalf(out.x));
+        // (with the digits its cancellations need, as below; integral objects keep Digits)
+        if (floats)
+            out.x = normalize_trig_signs(num::has_integral(out.x) ? GiNaC::evalf(out.x)
+                                                                  : evaluate_with_guard(out.x, P.t, values_scale(exact)));
         // integral objects (a free term across the axis) keep the nesting of the general form:
         // its canonical form folds the scale factors that the exact rationals of the floats leave
         if (floats && num::has_integral(out.x)) out.x = canonical(out.x);
@@ -450,41 +516,45 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
     const rotation_operator_algebra R(out.model.form.Omega);
     const operator_solution S = solve(out.model.form.ode, R, P.t, out.model.factors());
     out.model_solution = vector_solution(P, out.model.form, S);
+    bool floats = false;
+    for (const auto& [k, x] : v.vectors) floats = floats || has_float(x);
+    for (const auto& [k, x] : v.scalars) floats = floats || has_float(x);
+    // the floats as exact numbers (the decimal each float prints as: 0.1 is 1/10, so that
+    // 5 sin(t/5) prints as 5.0*sin(0.2*t); it differs from the binary number by less than the
+    // float's own rounding), put into the exact solution, and the result evaluated at the end
+    // with the digits its cancellations need (evaluate_with_guard): rounding each coefficient to
+    // Digits before the terms of size 1/|w|^3 cancel would lose the digits the general path's
+    // eval keeps, and floats inside the derivation made the printed solution depend on the order
+    // GiNaC happened to sum them in
+    parameter_values exact = v;
+    for (auto& [k, x] : exact.vectors) x = num::decimal_floats_of(x);
+    for (auto& [k, x] : exact.scalars) x = num::decimal_floats_of(x);
+    ex x_exact;
     try {
-        out.x = put_values(out.model_solution, v);
-        bool floats = false;
-        for (const auto& [k, x] : v.vectors) floats = floats || has_float(x);
-        for (const auto& [k, x] : v.scalars) floats = floats || has_float(x);
-        if (floats) {
-            // the floats as exact numbers, put into the exact solution, and
-            // the result evaluated at the end with the digits its cancellations need: rounding each
-            // coefficient to Digits before the terms of size 1/|w|^3 cancel would lose the digits
-            // the general path's eval keeps, and floats inside the derivation made the printed
-            // solution depend on the order GiNaC happened to sum them in
-            // (the decimal each float prints as: 0.1 is 1/10, so that 5 sin(t/5) prints as 5.0*sin(0.2*t);
-            // it differs from the binary number by less than the float's own rounding)
-            parameter_values exact = v;
-            for (auto& [k, x] : exact.vectors) x = num::decimal_floats_of(x);
-            for (auto& [k, x] : exact.scalars) x = num::decimal_floats_of(x);
-            // a numeric frequency may come out negative (1 - q of a damped pendulum): sin(-1.9 t) -> -sin(1.9 t)
-            out.x = normalize_trig_signs(evaluate_with_guard(put_values(num::decimal_floats_of(out.model_solution), exact)));
-        }
+        x_exact = put_values(floats ? num::decimal_floats_of(out.model_solution) : out.model_solution, exact);
     } catch (const domain_error&) {
         if (out.model.deferred_values.empty()) throw;
         // the floats meet where the derivation, without them, could not see it (w0 = 2.0 next to
         // cos(2 t) is a resonance): derive again with the floats as the exact numbers they are
-        parameter_values exact = v;
-        for (auto& [k, x] : exact.vectors) x = num::exact_floats_of(x);
-        for (auto& [k, x] : exact.scalars) x = num::exact_floats_of(x);
+        parameter_values binary = v;
+        for (auto& [k, x] : binary.vectors) x = num::exact_floats_of(x);
+        for (auto& [k, x] : binary.scalars) x = num::exact_floats_of(x);
         cauchy_problem Q = P;
         Q.reduced = nullptr;
         Q.expression = num::exact_floats_of(P.expression);
         for (ex& x : Q.initial) x = num::exact_floats_of(x);
-        scene_solution again = solve(Q, exact);
+        scene_solution again = solve(Q, binary);  // exact values: witnessed there
         again.model.floats_made_exact = out.model.deferred_values;
-        again.x = normalize_trig_signs(GiNaC::evalf(again.x));
+        again.x = normalize_trig_signs(evaluate_with_guard(again.x, P.t, values_scale(binary)));
         return again;
     }
+    // the witness (solution_witness.h) on the exact result against the problem with the same
+    // exact values: solve(P, values) never returns what its residual test sees as nonzero.
+    // Floats in the problem itself were in the derivation: the witness then measures with the
+    // rounding of floats (it sees them in the result).
+    require_witness(with_values(P, exact), x_exact);
+    // a numeric frequency may come out negative (1 - q of a damped pendulum): sin(-1.9 t) -> -sin(1.9 t)
+    out.x = floats ? normalize_trig_signs(evaluate_with_guard(x_exact, P.t, values_scale(exact))) : x_exact;
     return out;
 }
 

@@ -161,6 +161,12 @@ GiNaC::ex evalf_reduced(const GiNaC::ex& e, long digits) {
     return x.evalf();
 }
 
+long decimal_exponent(const GiNaC::numeric& x) {
+    const cln::cl_RA a = cln::abs(cln::rational(cln::the<cln::cl_R>(x.to_cl_N())));
+    const long bits = long(cln::integer_length(cln::numerator(a))) - long(cln::integer_length(cln::denominator(a)));
+    return long(std::floor(double(bits) * 0.30103));
+}
+
 namespace {
 
 struct rounder : GiNaC::map_function {
@@ -171,7 +177,9 @@ struct rounder : GiNaC::map_function {
         // m * 10^k with digits decimal digits in m, then read back with that many digits
         const cln::cl_RA q = cln::rational(r);
         const cln::cl_RA a = cln::abs(q);
-        long k = long(std::floor(double(cln::integer_length(cln::floor1(a))) * 0.30103)) - digits;
+        // log10 a within 1, also below 1: from floor(a) alone every number below 10^-digits
+        // became m = 0, and so 0 (1e-200 in a scene's result printed as 0; issue 27)
+        long k = decimal_exponent(n) - digits;
         auto scaled = [&](long kk) -> cln::cl_RA {
             // (expt_pos needs a positive exponent: at 0 it does not return)
             if (kk == 0) return a;
@@ -180,7 +188,7 @@ struct rounder : GiNaC::map_function {
         cln::cl_I m = cln::round1(scaled(k));
         const cln::cl_I limit = cln::expt_pos(cln::cl_I(10), digits);
         while (m >= limit) m = cln::round1(scaled(++k));
-        while (m > 0 && m * 10 < limit) m = cln::round1(scaled(--k));
+        while (m * 10 < limit) m = cln::round1(scaled(--k));  // a > 0: m reaches limit/10
         std::ostringstream os;
         if (cln::minusp(q)) os << "-";
         os << GiNaC::numeric(m) << "e" << k;

@@ -50,6 +50,10 @@ long reduction_digits(const GiNaC::ex& e);
 /// the raised precision (round them for printing with round_digits).
 GiNaC::ex evalf_reduced(const GiNaC::ex& e, long digits);
 
+/// floor(log10 |x|) within 1 (from the bit lengths of the exact rational of x, so without
+/// overflow or underflow at any size: 10^-5000 and 10^5000 too); x != 0, real.
+long decimal_exponent(const GiNaC::numeric& x);
+
 /// Every floating-point number in e rounded to `digits` significant decimal
 /// digits (printed with at most that many).
 GiNaC::ex round_digits(const GiNaC::ex& e, long digits);
