@@ -538,7 +538,7 @@ void register_mechanics_builtins(registry& r) {
             // solve(P, values) proposed (it derives the solution of that scene)
             auto at = [&](const data_values& dv) -> value {
                 try {
-                    return numbers(put_values_limit(e, dv), b);
+                    return numbers(put_values_limit(e, dv, tsym), b);
                 } catch (const domain_error& x) {
                     const std::string m = x.what();
                     if (m.rfind(singular_values_message, 0) != 0) throw;

@@ -105,16 +105,17 @@ std::string vanishing_denominator(const ex& e, const data_values& d) {
 // sin(sqrt(4 k - c^2) t/2)/sqrt(4 k - c^2), a resonance), its limit as every value
 // (each scalar, each component of a vector) approaches the one given
 // (scalar/limit.h: along lines through the point from both sides, accepted where
-// they agree); where that limit is not established, domain_error naming the
-// denominator and why.
-ex put_values_limit(const ex& e, const data_values& d) {
+// they agree; `held`, the time of eval, stays as given); where that limit is not
+// established, domain_error naming the denominator and why.
+ex put_values_limit(const ex& e, const data_values& d, const ex& held) {
     try {
         return put_values(e, d);
     } catch (const std::exception& x) {
         if (!is_division_by_zero(x)) throw;
     }
     std::vector<ex> scalar_keys, vector_keys;
-    for (const auto& [k, x] : d.scalars) scalar_keys.push_back(k);
+    for (const auto& [k, x] : d.scalars)
+        if (!k.is_equal(held)) scalar_keys.push_back(k);
     for (const auto& [k, x] : d.vectors) vector_keys.push_back(k);
     const near_point near = [&](const std::vector<ex>& off) {
         data_values m = d;

@@ -35,9 +35,10 @@ GiNaC::ex put_values(const GiNaC::ex& e, const data_values& d);
 /// e.g. 1 - cos(1e-12) to 0 at 20 digits, when the values are put in).
 data_values exact_values(data_values d);
 /// put_values, or where that divides by zero, the limit as the values approach those given
-/// (scalar/limit.h); domain_error beginning with singular_values_message, naming the
-/// denominator that vanishes and why, where that limit is not established.
-GiNaC::ex put_values_limit(const GiNaC::ex& e, const data_values& d);
+/// (scalar/limit.h), the value of the symbol `held` (eval's time) staying as given;
+/// domain_error beginning with singular_values_message, naming the denominator that
+/// vanishes and why, where that limit is not established.
+GiNaC::ex put_values_limit(const GiNaC::ex& e, const data_values& d, const GiNaC::ex& held = 0);
 /// The beginning of put_values_limit's refusals.
 inline constexpr const char* singular_values_message = "the closed form is singular at these values";
 /// A denominator of e (the base of a negative power) that the values make 0, printed;

@@ -15,6 +15,8 @@ namespace symrep {
 
 namespace {
 
+const char* const no_expansion = "no power-series expansion";
+
 /// The direction of line j: a nonzero rational per parameter from a fixed
 /// pseudo-random sequence (deterministic; no two lines parallel in practice).
 std::vector<GiNaC::numeric> direction(std::size_t j, std::size_t n) {
@@ -106,8 +108,8 @@ GiNaC::ex limit_along(const GiNaC::ex& x0, const GiNaC::symbol& mu) {
     } catch (const std::bad_alloc&) {
         throw;
     } catch (const std::exception&) {
-        throw domain_error("the limit cannot be found: the expression has no power-series expansion along a line "
-                           "through the point (an essential singularity, or a root that is not a series)");
+        throw domain_error(std::string("the limit cannot be found: the expression has ") + no_expansion +
+                           " along a line through the point (an essential singularity, or a root that is not a series)");
     }
     if (!GiNaC::is_a<GiNaC::pseries>(s)) return s;  // no mu in it
     const GiNaC::pseries& ps = GiNaC::ex_to<GiNaC::pseries>(s);
@@ -138,11 +140,11 @@ GiNaC::ex limit_along(const GiNaC::ex& x0, const GiNaC::symbol& mu) {
     return value;
 }
 
-/// The limits of every entry along the half-line p0 + sign mu^2 d.
+/// The limits of every entry along the half-line p0 + sign mu^power d.
 line_outcome along_line(std::size_t n, const near_point& near, const std::vector<GiNaC::numeric>& d, int sign,
-                        const GiNaC::symbol& mu) {
+                        const GiNaC::symbol& mu, int power) {
     std::vector<GiNaC::ex> offsets;
-    for (std::size_t i = 0; i < n; ++i) offsets.push_back(sign * d[i] * GiNaC::pow(mu, 2));
+    for (std::size_t i = 0; i < n; ++i) offsets.push_back(sign * d[i] * GiNaC::pow(mu, power));
     line_outcome out;
     GiNaC::ex x;
     try {
@@ -167,23 +169,28 @@ bool is_division_by_zero(const std::exception& x) {
     return dynamic_cast<const domain_error*>(&x) && std::string(x.what()).find("division by zero") != std::string::npos;
 }
 
-GiNaC::ex limit_at_point(std::size_t n, const near_point& near) {
+namespace {
+
+GiNaC::ex limit_on_lines(std::size_t n, const near_point& near, int power) {
     const GiNaC::possymbol mu("mu");
-    // two directions, each from both sides; a direction whose line lies in the
-    // singular set (the expression divides by zero all along it) is replaced by
-    // the next one
+    // the first direction from both sides (a limit that differs between the sides:
+    // |k|/k), a second one from one side (one that depends on the direction:
+    // x y/(x^2 + y^2)); a direction whose line lies in the singular set (the
+    // expression divides by zero all along it) is replaced by the next one
     std::vector<std::vector<GiNaC::ex>> found;
     std::size_t directions = 0;
     unsigned rows = 0;
     for (std::size_t j = 0; j < 6 && directions < 2; ++j) {
         const std::vector<GiNaC::numeric> d = direction(j, n);
-        const line_outcome plus = along_line(n, near, d, 1, mu);
+        const line_outcome plus = along_line(n, near, d, 1, mu, power);
         if (plus.on_singular_set) continue;
-        const line_outcome minus = along_line(n, near, d, -1, mu);
-        if (minus.on_singular_set) continue;
+        if (directions == 0) {
+            const line_outcome minus = along_line(n, near, d, -1, mu, power);
+            if (minus.on_singular_set) continue;
+            found.push_back(minus.limits);
+        }
         rows = plus.rows;
         found.push_back(plus.limits);
-        found.push_back(minus.limits);
         ++directions;
     }
     if (directions < 2)
@@ -208,6 +215,19 @@ GiNaC::ex limit_at_point(std::size_t n, const near_point& near) {
     GiNaC::matrix m(rows, unsigned(found[0].size()) / rows);
     for (std::size_t i = 0; i < found[0].size(); ++i) m(unsigned(i) / m.cols(), unsigned(i) % m.cols()) = found[0][i];
     return m;
+}
+
+}  // namespace
+
+GiNaC::ex limit_at_point(std::size_t n, const near_point& near) {
+    // lambda = mu first (half the degrees: faster); where a root of a quantity that
+    // vanishes linearly makes that a Puiseux series, lambda = mu^2
+    try {
+        return limit_on_lines(n, near, 1);
+    } catch (const domain_error& x) {
+        if (std::string(x.what()).find(no_expansion) == std::string::npos) throw;
+    }
+    return limit_on_lines(n, near, 2);
 }
 
 }  // namespace symrep

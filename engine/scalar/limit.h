@@ -9,19 +9,21 @@
 //
 // Method: along a line p = p0 + lambda d through the point the expression is a
 // function of lambda alone, and GiNaC's series in lambda at 0 gives its limit
-// (the lambda^0 coefficient, with the negative powers proved 0). lambda is taken
-// as mu^2 (mu > 0) with both signs of d, so that a square root of a quantity
-// that vanishes linearly (sqrt(4 k - c^2) on any line through c = 2, k = 1) is a
-// power series in mu and each side of the point is approached. The limit is taken
-// along two generic directions d, each from both sides (four half-lines), and
-// accepted only where the four values are proved equal (the exact zero test,
-// scalar/equality.h); a limit that differs between them (x y/(x^2 + y^2), |k|/k
-// at 0), a pole, an expansion GiNaC cannot do (an essential singularity, a
-// root that is not a power series in mu) or an equality that cannot be decided
-// is refused with the reason. Agreement on half-lines is what can be checked,
-// not a proof for every curve of approach (x^2 y/(x^4 + y^2) agrees on lines);
-// for the solutions of linear problems with constant coefficients, which are
-// analytic in their parameters, the two coincide (docs/numeric.md).
+// (the lambda^0 coefficient, with the negative powers proved 0). lambda is mu
+// (mu > 0) with both signs of d, so that each side of the point is approached;
+// where a root of a quantity that vanishes linearly makes that a Puiseux series
+// (sqrt(4 k - c^2) on a line through c = 2, k = 1), lambda = mu^2, so that the
+// root is a power series in mu. The limit is taken along a generic direction d
+// from both sides and along a second direction from one side (three half-lines),
+// and accepted only where the three values are proved equal (the exact zero
+// test, scalar/equality.h); a limit that differs between them (|k|/k at 0,
+// x y/(x^2 + y^2) at 0), a pole, an expansion GiNaC cannot do (an essential
+// singularity, a root that is not a power series in mu) or an equality that
+// cannot be decided is refused with the reason. Agreement on half-lines is what
+// can be checked, not a proof for every curve of approach (x^2 y/(x^4 + y^2)
+// agrees on lines); for the solutions of linear problems with constant
+// coefficients, which are analytic in their parameters, the two coincide
+// (docs/numeric.md).
 #pragma once
 
 #include <functional>
