@@ -38,21 +38,6 @@ using args_t = std::vector<value>;
 
 namespace {
 
-/// A denominator of e (the base of a negative power) that the values make 0, printed;
-/// "" when none is found. For eval's message at a singular point.
-std::string vanishing_denominator(const ex& e, const data_values& d) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-        if (!GiNaC::is_a<GiNaC::power>(*it)) continue;
-        const ex& k = it->op(1);
-        if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_negative()) continue;
-        try {
-            if (GiNaC::normal(put_values(it->op(0), d)).is_zero()) return print_ex(it->op(0));
-        } catch (const std::exception&) {
-        }
-    }
-    return "";
-}
-
 const char* const section = "Vectors and mechanics";
 
 void add(registry& r, std::string name, std::string sig, std::string summary, std::string eq, std::string example,
@@ -485,9 +470,11 @@ void register_mechanics_builtins(registry& r) {
         "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
         "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
         "number or a list of numbers (a time written as a decimal, 1e300, is that decimal number exactly). Returns a number or a list of components (a list of those for "
-        "several times). Where values that are 0 make the closed form 0/0 (w = 0 in sin(|w| t)/|w|), "
-        "the exact limit is taken; at another singular point (a double root c^2 = 4 k, a resonance) eval "
-        "names the denominator that vanishes and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
+        "several times). Where the values make the closed form divide by zero (w = [0, 0, 0] in sin(|w| t)/|w|, "
+        "a double root c^2 = 4 k, a resonance w0 = 2, also given as the float 2.0), the exact limit is taken "
+        "as the values approach those given (along lines through the point from both sides, accepted where "
+        "all agree; docs/numeric.md); where it is not established (a pole, a limit that depends on the "
+        "direction) eval names the denominator that vanishes and why, and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
         "result is evaluated with as many digits as its proved error bound needs to be correct to double precision "
         "(no loss where the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12 or 1e-300, or at long "
         "phases; where 2560 digits do not suffice, an error says so). Integral objects "
@@ -546,21 +533,17 @@ void register_mechanics_builtins(registry& r) {
                         throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
                                            print_ex(tsym) + ": the values are constants (the expression is "
                                            "evaluated at " + print_ex(tsym) + " = T)");
-            // e at the values: where a value is 0 and e is 0/0 there, the limit (put_values_limit);
-            // at another singular point, the denominator that vanishes named and solve(P, values)
-            // proposed (it derives the solution of that scene: a double root, a resonance)
+            // e at the values: where they make it divide by zero, its limit as the values approach
+            // them (put_values_limit); where that is not established, the denominator named and
+            // solve(P, values) proposed (it derives the solution of that scene)
             auto at = [&](const data_values& dv) -> value {
                 try {
-                    return numbers(put_values_limit(e, dv), b);
-                } catch (const std::exception& x) {
-                    if (std::string(x.what()).find("division by zero") == std::string::npos) throw;
-                    const std::string den = vanishing_denominator(e, dv);
-                    throw domain_error(b.name + ": the closed form is singular at these values" +
-                                       (den.empty() ? std::string(" (a division by zero)")
-                                                    : " (its denominator " + den + " is 0 there)") +
-                                       " and eval does not take this limit (it takes those where values that are 0 make "
-                                       "it 0/0, w = 0 in sin(|w| t)/|w|): solve the problem with these values, solve(P, values), which derives the "
-                                       "solution of this scene (a double root, a resonance), and eval that");
+                    return numbers(put_values_limit(e, dv, tsym), b);
+                } catch (const domain_error& x) {
+                    const std::string m = x.what();
+                    if (m.rfind(singular_values_message, 0) != 0) throw;
+                    throw domain_error(b.name + ": " + m + "; for a solution of a problem P, solve(P, values) "
+                                       "derives the solution of this scene");
                 }
             };
             try {

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "numeric/reference.h"
+#include "scalar/limit.h"
 
 #include "scalar/scalar.h"
 #include "output/printer.h"
@@ -87,39 +88,54 @@ ex put_values(const ex& e, const data_values& d) {
     return subs_checked(c, d.scalars);
 }
 
-// Where the values make e singular (w = 0 in sin(|w| t)/|w|), its limit: each
-// zero value x becomes lambda x' (a vector: x' a fixed generic direction; a scalar:
-// lambda^2, so that sqrt(k) is lambda) and the
-// lambda^0 term of the series in lambda is taken (the exact limit lambda -> 0).
-ex put_values_limit(const ex& e, const data_values& d) {
+std::string vanishing_denominator(const ex& e, const data_values& d) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::power>(*it)) continue;
+        const ex& k = it->op(1);
+        if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_negative()) continue;
+        try {
+            if (GiNaC::normal(put_values(it->op(0), d)).is_zero()) return print_ex(it->op(0));
+        } catch (const std::exception&) {
+        }
+    }
+    return "";
+}
+
+// Where the values make e divide by zero (w = 0 in sin(|w| t)/|w|, c = 2, k = 1 in
+// sin(sqrt(4 k - c^2) t/2)/sqrt(4 k - c^2), a resonance), its limit as every value
+// (each scalar, each component of a vector) approaches the one given
+// (scalar/limit.h: along lines through the point from both sides, accepted where
+// they agree; `held`, the time of eval, stays as given); where that limit is not
+// established, domain_error naming the denominator and why.
+ex put_values_limit(const ex& e, const data_values& d, const ex& held) {
     try {
         return put_values(e, d);
-    } catch (const std::exception&) {
+    } catch (const std::exception& x) {
+        if (!is_division_by_zero(x)) throw;
     }
-    const GiNaC::possymbol lambda("lambda");
-    data_values dl = d;
-    bool any = false;
-    for (auto& [k, x] : dl.vectors)
-        if (GiNaC::normal(x.op(0)).is_zero() && GiNaC::normal(x.op(1)).is_zero() && GiNaC::normal(x.op(2)).is_zero()) {
-            x = vector_literal(lambda * 3, lambda * 5, lambda * 7) / 7;
-            any = true;
+    std::vector<ex> scalar_keys, vector_keys;
+    for (const auto& [k, x] : d.scalars)
+        if (!k.is_equal(held)) scalar_keys.push_back(k);
+    for (const auto& [k, x] : d.vectors) vector_keys.push_back(k);
+    const near_point near = [&](const std::vector<ex>& off) {
+        data_values m = d;
+        std::size_t i = 0;
+        for (const ex& k : scalar_keys) m.scalars[k] = d.scalars.at(k) + off[i++];
+        for (const ex& k : vector_keys) {
+            const ex& x = d.vectors.at(k);
+            m.vectors[k] = vector_literal(x.op(0) + off[i], x.op(1) + off[i + 1], x.op(2) + off[i + 2]);
+            i += 3;
         }
-    // a scalar as lambda^2: the forms of a spring constant k = 0 have sqrt(k) (sqrt(k/m) t),
-    // a series in lambda then, not in sqrt(lambda) (which GiNaC's series does not expand)
-    for (auto& [k, x] : dl.scalars)
-        if (GiNaC::normal(x).is_zero()) { x = GiNaC::pow(lambda, 2); any = true; }
-    if (!any) return put_values(e, d);  // rethrows the original error
-    const ex c = put_values(e, dl);
-    auto lim = [&](const ex& x) {
-        const ex s = GiNaC::series_to_poly(GiNaC::normal(x).series(lambda == 0, 1));
-        return subs_checked(s, lambda == 0);
+        return put_values(e, m);
     };
-    if (GiNaC::is_a<GiNaC::matrix>(c)) {
-        GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(c);
-        for (unsigned i = 0; i < m.rows(); ++i) m(i, 0) = lim(m(i, 0));
-        return m;
+    try {
+        return limit_at_point(scalar_keys.size() + 3 * vector_keys.size(), near);
+    } catch (const domain_error& x) {
+        const std::string den = vanishing_denominator(e, d);
+        throw domain_error(std::string(singular_values_message) +
+                           (den.empty() ? std::string(" (a division by zero)") : " (its denominator " + den + " is 0 there)") +
+                           " and " + x.what());
     }
-    return lim(c);
 }
 
 std::vector<ex> components(const ex& c) {

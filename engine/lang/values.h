@@ -5,8 +5,8 @@
 // read_values() reads such a list (vectors as [x, y, z], scalars as expressions; a
 // value may use the others); put_values_limit() puts them into an expression
 // (vectors by components, giving a 3x1 matrix for a vector expression) and takes
-// the exact limit where the values make a closed form singular (w = 0 in
-// sin(|w| t)/|w|).
+// the exact limit where the values make a closed form divide by zero (w = 0 in
+// sin(|w| t)/|w|, a double root, a resonance; scalar/limit.h).
 #pragma once
 
 #include <map>
@@ -34,8 +34,16 @@ GiNaC::ex put_values(const GiNaC::ex& e, const data_values& d);
 /// rational it denotes (for evaluation: GiNaC would otherwise round at once,
 /// e.g. 1 - cos(1e-12) to 0 at 20 digits, when the values are put in).
 data_values exact_values(data_values d);
-/// put_values, or where that fails because a value is 0, the exact limit at that value.
-GiNaC::ex put_values_limit(const GiNaC::ex& e, const data_values& d);
+/// put_values, or where that divides by zero, the limit as the values approach those given
+/// (scalar/limit.h), the value of the symbol `held` (eval's time) staying as given;
+/// domain_error beginning with singular_values_message, naming the denominator that
+/// vanishes and why, where that limit is not established.
+GiNaC::ex put_values_limit(const GiNaC::ex& e, const data_values& d, const GiNaC::ex& held = 0);
+/// The beginning of put_values_limit's refusals.
+inline constexpr const char* singular_values_message = "the closed form is singular at these values";
+/// A denominator of e (the base of a negative power) that the values make 0, printed;
+/// "" when none is found. For the messages at a singular point.
+std::string vanishing_denominator(const GiNaC::ex& e, const data_values& d);
 /// The entries of a matrix (row by row), or {c} for a scalar.
 std::vector<GiNaC::ex> components(const GiNaC::ex& c);
 /// evalf(x) as a double; type_error naming b and `what` when x is not a real number.

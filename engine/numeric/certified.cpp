@@ -113,10 +113,12 @@ private:
         try {
             v = cln::exp(a.v);
         } catch (const cln::runtime_exception&) {
-            // beyond CLN's exponent range (exp(-1e300)): 0, within the least positive float
-            // (the error interval's upper end a + ea is as far out: ea < 1/2 below)
-            if (!cln::minusp(a.v + reduced_error(a))) throw;
-            return {zero_, cln::least_positive_float(f_)};
+            // beyond CLN's exponent range (exp(-1e300)): 0, within exp(a + ea) < 2^(-2^40)
+            // when a + ea < -2^41. Not the least positive float as the bound: a product of
+            // it with any number below 1 would underflow in turn ((exp(-10^300) - 1)/10^300)
+            const cln::cl_F huge_exponent = cln::scale_float(one_, 41);
+            if (!(a.v + reduced_error(a) < -huge_exponent)) throw;
+            return {zero_, cln::scale_float(one_, -cln::ash(cln::cl_I(1), 40))};
         }
         return {v, abs(v) * expm1_bound(reduced_error(a)) + ferr_ * abs(v)};
     }

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "scalar/limit.h"
 
 namespace symrep::num {
 
@@ -267,22 +268,20 @@ GiNaC::ex value_at(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs, con
         return x.subs(at, GiNaC::subs_options::no_pattern);
     } catch (const error&) {
         throw;
-    } catch (const std::exception&) {
-        // 0/0 at the point (w = 0 in 1/|w|^2 terms, a resonance w0 = nu in
-        // 1/(w0^2 - nu^2)): the value of the continuous extension, the limit
-        // along a generic line through the point, inputs -> point + lambda c.
-        const GiNaC::symbol lambda("lambda");
-        GiNaC::exmap line;
-        for (std::size_t i = 0; i < inputs.size(); ++i)
-            line[inputs[i]] = exact_rational(point[i]) + lambda * GiNaC::numeric(int(2 * i + 3), int(i + 2));
-        try {
-            const GiNaC::ex near = x.subs(line, GiNaC::subs_options::no_pattern);
-            return GiNaC::series_to_poly(near.series(lambda == 0, 1)).subs(lambda == 0);
-        } catch (const error&) {
-            throw;
-        } catch (const std::exception& why) {
-            throw domain_error(std::string("reference: no value at this point (") + why.what() + ")");
-        }
+    } catch (const std::exception& why) {
+        if (!is_division_by_zero(why)) throw;
+    }
+    // 0/0 at the point (w = 0 in 1/|w|^2 terms, a resonance w0 = nu in
+    // 1/(w0^2 - nu^2)): the value of the continuous extension, the limit as the
+    // inputs approach the point (scalar/limit.h)
+    try {
+        return limit_at_point(inputs.size(), [&](const std::vector<GiNaC::ex>& off) {
+            GiNaC::exmap near;
+            for (std::size_t i = 0; i < inputs.size(); ++i) near[inputs[i]] = at[inputs[i]] + off[i];
+            return x.subs(near, GiNaC::subs_options::no_pattern);
+        });
+    } catch (const domain_error& why) {
+        throw domain_error(std::string("reference: no value at this point (") + why.what() + ")");
     }
 }
 
