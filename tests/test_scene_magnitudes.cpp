@@ -125,3 +125,18 @@ TEST(SceneMagnitudes, RoundingAndZeroTestAtAnySize) {
     EXPECT_TRUE(symrep::is_nonzero_generic(p, "a test"));
     EXPECT_EQ(symrep::decide_zero(GiNaC::sqrt(GiNaC::ex(8)) - 2 * GiNaC::sqrt(GiNaC::ex(2))).is_zero, symrep::truth::yes);
 }
+
+// A float whose decimal has exponent 0 once its point is moved (123456789.0 prints
+// 1.23456789E8: mantissa 123456789, exponent -8 + 8 = 0) hung in num::decimal_of, which
+// raised 10 to it with cln::expt_pos (which does not return at 0): bench/differential seed 2,
+// case 101. Reference: r = g (1 - cos t - t sin t, ...) in closed form (w = [0, 0, 1],
+// r0 = v0 = 0: the planar problem z'' + 2 i z' - z = g_y i, z = g_y i (1 - e^(-it) (1 + i t))).
+TEST(SceneMagnitudes, ADecimalWithExponentZeroIsRead) {
+    const double T = 2, gy = 123456789.0;
+    const std::array<double, 3> ref{gy * (std::sin(T) - T * std::cos(T)), gy * (std::cos(T) + T * std::sin(T) - 1), 0};
+    EXPECT_LT(scene_difference(gravity, "[w = [0, 0, 1], g = [0, 123456789.0, 0], r0 = [0, 0, 0], v0 = [0, 0, 0]]", "2", ref),
+              1e-13);
+    EXPECT_LT(scene_difference(gravity, "[w = [0, 0, 1], g = [0, 51011748676071968.0, 0], r0 = [0, 0, 0], v0 = [0, 0, 0]]",
+                               "2", {ref[0] / gy * 51011748676071968.0, ref[1] / gy * 51011748676071968.0, 0}),
+              1e-13);
+}

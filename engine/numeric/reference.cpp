@@ -96,8 +96,10 @@ GiNaC::numeric decimal_of(const cln::cl_R& r) {
         }
     }
     const cln::cl_RA m = negative ? cln::cl_RA(-mantissa) : cln::cl_RA(mantissa);
-    const cln::cl_RA v = exponent >= 0 ? m * cln::expt_pos(cln::cl_I(10), exponent)
-                                       : m / cln::expt_pos(cln::cl_I(10), -exponent);
+    // (cln::expt_pos(x, 0) does not return: 1.23456789E8 has exponent 0 here)
+    const cln::cl_RA v = exponent == 0  ? m
+                         : exponent > 0 ? m * cln::expt_pos(cln::cl_I(10), exponent)
+                                        : m / cln::expt_pos(cln::cl_I(10), -exponent);
     return GiNaC::numeric(cln::cl_N(v));
 }
 
