@@ -3,8 +3,15 @@
 inverse_laplace_transform and rsolve, timed (CPU, median of 3, timeout per call) and
 checked against the closed forms symrep derives (numerically at 5 points, 1e-10).
 
-usage: python3 bench/signals/sympy_transforms.py [--timeout SECONDS]
-Prints a CSV: problem,tool,seconds,status. Never run by the tests."""
+usage: python3 bench/signals/sympy_transforms.py [--timeout SECONDS] [--warm]
+Prints a CSV: problem,tool,seconds,status. Never run by the tests.
+
+Default ("first call"): each call in a freshly forked process (sympy imported by the parent,
+every cache cold): the CPU time of a user's first call, import excluded.
+--warm: in one process, after one untimed call of the same problem, with SymPy's cache
+cleared before each timed call (so that the result is not looked up): the steady-state
+cost, comparable with symrep's Google Benchmark repeats.
+Whole processes (interpreter start and import included) are timed by bench/signals/processes.sh."""
 import argparse
 import multiprocessing as mp
 import time
@@ -41,11 +48,30 @@ def run(name, q):
     q.put((seconds, "right" if ok else "wrong"))
 
 
+def warm(name):
+    from sympy.core.cache import clear_cache
+
+    fn = PROBLEMS[name][0]
+    fn()
+    times = []
+    for _ in range(3):
+        clear_cache()
+        start = time.process_time()
+        fn()
+        times.append(time.process_time() - start)
+    return sorted(times)[1]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument("--warm", action="store_true")
     args = ap.parse_args()
     print("problem,tool,seconds,status")
+    if args.warm:
+        for name in PROBLEMS:
+            print(f"{name},sympy {sp.__version__} warm,{warm(name)},ok", flush=True)
+        return
     for name in PROBLEMS:
         times, status = [], "ok"
         for _ in range(3):

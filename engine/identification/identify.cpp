@@ -1,6 +1,7 @@
 // symrep/identification/identify.cpp -- the identification procedure of IV.2.3, its
 // integral-form variant, the forward model and the baseline of regression on derivatives.
 #include "identification/identify.h"
+#include "identification/identify_detail.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,7 @@
 
 namespace symrep::identification {
 
-namespace {
+namespace detail {
 
 double rms(const std::vector<double>& v) {
     double s = 0;
@@ -78,11 +79,6 @@ double integrated_residual(const measured_system& s, const std::vector<double>& 
     return rms(r) / rms(s.q);
 }
 
-struct lsq {
-    Eigen::VectorXd x;
-    double cond;
-};
-
 // min |A x - b| with the columns scaled to unit norm; the condition number of the scaled A.
 lsq least_squares(Eigen::MatrixXd A, const Eigen::VectorXd& b) {
     Eigen::VectorXd scale(A.cols());
@@ -133,7 +129,9 @@ std::string warnings(const measured_system& s, double cond) {
     return out;
 }
 
-}  // namespace
+}  // namespace detail
+
+using namespace detail;
 
 std::vector<double> fit_polynomial(const std::vector<double>& x, const std::vector<double>& y, unsigned degree,
                                    double* cond) {

@@ -53,6 +53,8 @@ struct identification_report {
     std::vector<double> points_q;    ///< identify_values: the points (q_e, neighbours averaged m times)
     std::vector<double> values_f;    ///< identify_values: f at them
     std::string warning;             ///< nonempty: an ill-conditioned fit, said with its number
+    std::size_t window = 0;          ///< identify_sindy_cv: the Savitzky-Golay window chosen (points)
+    double threshold = 0;            ///< identify_sindy_cv: the STLSQ threshold chosen (relative)
 };
 
 /// The thesis's procedure (IV.2.36, IV.2.45): f at the 2^n points, then a least-squares

@@ -112,13 +112,20 @@ std::vector<GiNaC::ex> blocks_from_walsh(std::vector<GiNaC::ex> c) {
     return v;
 }
 
-std::vector<double> block_averages(const std::function<double(double)>& f, unsigned n, double T) {
+std::vector<double> block_averages(const std::function<double(double)>& f, unsigned n, double T,
+                                   const std::vector<double>& jumps) {
     const std::size_t N = std::size_t(1) << n;
     const double h = T / double(N);
     std::vector<double> v(N);
     for (std::size_t k = 0; k < N; ++k) {
         const double a = double(k) * h, b = a + h;
-        const double I = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(f, a, b, 8, 1e-13);
+        double I = 0, lo = a;  // piece by piece between the jumps inside the block
+        for (double c : jumps)
+            if (c > lo && c < b) {
+                I += boost::math::quadrature::gauss_kronrod<double, 15>::integrate(f, lo, c, 8, 1e-13);
+                lo = c;
+            }
+        I += boost::math::quadrature::gauss_kronrod<double, 15>::integrate(f, lo, b, 8, 1e-13);
         if (!std::isfinite(I))
             throw domain_error("block average of the signal on [" + std::to_string(a) + ", " + std::to_string(b) +
                                "] is not finite");
@@ -129,19 +136,23 @@ std::vector<double> block_averages(const std::function<double(double)>& f, unsig
 
 namespace {
 
-// The breakpoints c in (lo, hi) of step(a t + b) and abs(a t + b) in f (a, b exact, a != 0).
-void breakpoints(const GiNaC::ex& f, const GiNaC::symbol& t, std::vector<GiNaC::numeric>& out) {
+// The breakpoints c of step(a t + b) and abs(a t + b) in f (a, b rational, a != 0; with
+// `exact` false any real numbers a != 0, b).
+void breakpoints(const GiNaC::ex& f, const GiNaC::symbol& t, std::vector<GiNaC::numeric>& out, bool exact = true) {
     for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it) {
         if (!GiNaC::is_a<GiNaC::function>(*it)) continue;
         const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
         if (name != "step" && name != "abs") continue;
         const GiNaC::ex u = GiNaC::expand(it->op(0));
         const GiNaC::ex a = u.coeff(t, 1), b = u.coeff(t, 0);
-        if (!u.is_polynomial(t) || u.degree(t) != 1 || !GiNaC::is_a<GiNaC::numeric>(a) ||
-            !GiNaC::is_a<GiNaC::numeric>(b) || !GiNaC::ex_to<GiNaC::numeric>(a).is_rational() ||
-            !GiNaC::ex_to<GiNaC::numeric>(b).is_rational())
-            throw domain_error("exact Walsh coefficients: " + name + "(" + message_text(it->op(0), 80) +
-                               ") is not of an argument a t + b with rational a != 0 and b");
+        const auto real = [exact](const GiNaC::ex& c) {
+            return GiNaC::is_a<GiNaC::numeric>(c) &&
+                   (exact ? GiNaC::ex_to<GiNaC::numeric>(c).is_rational() : GiNaC::ex_to<GiNaC::numeric>(c).is_real());
+        };
+        if (!u.is_polynomial(t) || u.degree(t) != 1 || !real(a) || !real(b))
+            throw domain_error(std::string(exact ? "exact Walsh coefficients: " : "a signal with jumps: ") + name + "(" +
+                               message_text(it->op(0), 80) + ") is not of an argument a t + b with " +
+                               (exact ? "rational" : "real") + " a != 0 and b");
         out.push_back(GiNaC::ex_to<GiNaC::numeric>(-b / a));
     }
 }
@@ -179,6 +190,23 @@ GiNaC::ex antiderivative(const GiNaC::ex& e, const GiNaC::symbol& t) {
 }
 
 }  // namespace
+
+std::vector<double> jump_points(const GiNaC::ex& f, const GiNaC::symbol& t, double T) {
+    std::vector<GiNaC::numeric> cuts;
+    breakpoints(f, t, cuts, false);
+    std::vector<double> out;
+    for (const auto& c : cuts) {
+        const double x = c.to_double();
+        if (x > 0 && x < T) out.push_back(x);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+GiNaC::ex piece_of(const GiNaC::ex& f, const GiNaC::symbol& t, double mid) {
+    return piece(f, t, GiNaC::numeric(mid));
+}
 
 bool is_piecewise_polynomial(const GiNaC::ex& f, const GiNaC::symbol& t) {
     try {

@@ -47,8 +47,15 @@ std::vector<double> blocks_from_walsh(std::vector<double> c);
 std::vector<GiNaC::ex> blocks_from_walsh(std::vector<GiNaC::ex> c);
 
 /// The 2^n block averages of f on [0, T) by Gauss-Kronrod quadrature (Boost.Math, 15 points
-/// per block, adaptive to 1e-13 relative). f must be finite on [0, T).
-std::vector<double> block_averages(const std::function<double(double)>& f, unsigned n, double T = 1);
+/// per block, adaptive to 1e-13 relative), each block split at the `jumps` inside it (sorted).
+/// f must be finite on [0, T).
+std::vector<double> block_averages(const std::function<double(double)>& f, unsigned n, double T = 1,
+                                   const std::vector<double>& jumps = {});
+/// The points in (0, T) where a step(a t + b) or abs(a t + b) of f changes its piece (a != 0, b
+/// real numbers; symrep::domain_error naming any other argument), sorted.
+std::vector<double> jump_points(const GiNaC::ex& f, const GiNaC::symbol& t, double T);
+/// f between two jump points, mid a point there: every step() and abs() replaced by its branch.
+GiNaC::ex piece_of(const GiNaC::ex& f, const GiNaC::symbol& t, double mid);
 /// The same, exact, for f a piecewise polynomial in t with exact coefficients: polynomials,
 /// step(a t + b) and abs(a t + b) with rational a, b (symrep::domain_error otherwise); each block
 /// split at the breakpoints inside it, each piece integrated through its antiderivative.

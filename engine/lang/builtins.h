@@ -33,6 +33,13 @@ public:
     /// Told of every file a builtin writes (plot, trajectory, hodograph): front-ends show the
     /// pictures of a statement (the Jupyter kernel). The full path.
     virtual void wrote_file(const std::string& path) {}
+    /// A builtin's report beside its result (identify's points, condition number, ...): `prose`
+    /// for people (one or more lines, each ending in a newline); `fields` the same as the members
+    /// of a JSON object ("\"points\": 256, ..." without braces), which a session under
+    /// --format json writes as one line {"file", "line", "kind": "report", "from", ...fields}.
+    virtual void report_fields(const std::string& from, const std::string& prose, const std::string& fields) {
+        out() << prose;
+    }
 };
 
 struct builtin {

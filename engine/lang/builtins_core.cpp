@@ -405,6 +405,8 @@ void register_core_builtins(registry& r) {
     });
     add_elementary(r, "step", "Heaviside step function (1 for x > 0, 0 for x < 0, 1/2 at 0)", "step(-2)",
                    [](const ex& x) { return GiNaC::step(x); });
+    add_elementary(r, "sign", "sign function (1 for x > 0, -1 for x < 0, 0 at 0), written 2 step(x) - 1", "sign(-2)",
+                   [](const ex& x) { return 2 * GiNaC::step(x) - 1; });
     add_elementary(r, "real_part", "real part", "real_part(2 + 3*I)", [](const ex& x) { return GiNaC::real_part(x); });
     add_elementary(r, "imag_part", "imaginary part", "imag_part(2 + 3*I)",
                    [](const ex& x) { return GiNaC::imag_part(x); });

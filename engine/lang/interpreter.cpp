@@ -576,8 +576,19 @@ value session::ode_form(const node& n) {
     return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
 }
 
+void session::report_fields(const std::string& from, const std::string& prose, const std::string& fields) {
+    if (opts_.format != output_options::json) {
+        *out_ << prose;
+        return;
+    }
+    *out_ << "{\"file\": " << json_quote(files_.empty() ? "<string>" : files_.back()) << ", \"line\": " << statement_line_
+          << ", \"kind\": \"report\", \"from\": " << json_quote(from) << (fields.empty() ? "" : ", ") << fields
+          << "}\n";
+}
+
 void session::exec(const node& stmt, bool echo) {
     const statement_clock clock(opts_.time_limit, statement_start_);
+    statement_line_ = stmt.line;
     if (stmt.kind == node::declare) {
         declare(stmt);
         return;

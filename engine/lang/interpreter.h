@@ -128,6 +128,7 @@ public:
     const std::vector<reported_error>& errors() const { return errors_; }
     /// Every file a builtin wrote so far (plot, trajectory, hodograph), full paths, in order.
     const std::vector<std::string>& files_written() const { return files_written_; }
+    void report_fields(const std::string& from, const std::string& prose, const std::string& fields) override;
     void wrote_file(const std::string& path) override {
         files_written_.push_back(path);
         if (on_file_) on_file_(path);
@@ -199,6 +200,7 @@ private:
     std::map<std::string, GiNaC::ex> symbols_;
     std::vector<std::string> dirs_;   ///< folders of the scripts being run
     std::vector<std::string> files_;  ///< names of the scripts being run
+    int statement_line_ = 0;          ///< the line of the statement being executed (reports)
     std::string base_dir_;
     int failures_ = 0;
     output_options opts_;
