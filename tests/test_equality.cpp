@@ -296,3 +296,89 @@ TEST(EqualityIssue13, VectorsAgainstListsAndDotsOfLiteralsAreDecided) {
     EXPECT_FALSE(s.evaluate("d").as_bool());
     EXPECT_TRUE(s.evaluate("e == [0, 0, 0]").as_bool());
 }
+
+namespace {
+
+/// The echo of one statement (what the symrep program prints for it), or "error: MESSAGE".
+std::string echo(session& s, std::ostringstream& out, std::ostringstream& err, const std::string& statement) {
+    out.str("");
+    err.str("");
+    if (s.run_string(statement, "<test>") != 0) return "error: " + err.str();
+    std::string t = out.str();
+    while (!t.empty() && t.back() == '\n') t.pop_back();
+    return t;
+}
+
+// The float model (scalar/floats.h, docs/language.md "Floats"): a float at the working
+// precision D is worth its value rounded to D digits; it prints as that decimal and `==`
+// compares that decimal exactly, never undecided.
+TEST(Floats, PrintAndCompareAsTheirDecimalAtTheWorkingPrecision) {
+    std::ostringstream out, err;
+    session s(out, err);
+    // printing: D digits at most, no guard digits
+    EXPECT_EQ(echo(s, out, err, "0.1*0.1"), "0.01");
+    EXPECT_EQ(echo(s, out, err, "0.01"), "0.01");
+    EXPECT_EQ(echo(s, out, err, "1/3.0"), "0.33333333333333333");
+    EXPECT_EQ(echo(s, out, err, "1e-30"), "1.0E-30");
+    EXPECT_EQ(echo(s, out, err, "100.0"), "100.0");
+    EXPECT_EQ(echo(s, out, err, "-2.5e-7"), "-2.5E-7");
+    EXPECT_EQ(echo(s, out, err, "[0.1*0.1, 0.1*0.1*I]"), "[0.01, 0.01*I]");
+    // evalf(e, n) rounds to n digits and prints them, whatever D is
+    EXPECT_EQ(echo(s, out, err, "evalf(pi, 30)"), "3.14159265358979323846264338328");
+    // equality: decided for numbers of any size, by the printed decimal
+    EXPECT_EQ(echo(s, out, err, "1e-30 == 0"), "false");
+    EXPECT_EQ(echo(s, out, err, "1e-300 == 0"), "false");
+    EXPECT_EQ(echo(s, out, err, "1e-16 == 0"), "false");
+    EXPECT_EQ(echo(s, out, err, "0.1 + 0.2 == 0.3"), "true");
+    EXPECT_EQ(echo(s, out, err, "0.1*0.1 == 0.01"), "true");
+    EXPECT_EQ(echo(s, out, err, "0.1 == 1/10"), "true");
+    EXPECT_EQ(echo(s, out, err, "0.1 == 1/10 + 1/10^17"), "false");
+    EXPECT_EQ(echo(s, out, err, "1/10^30 == 0"), "false");
+    EXPECT_EQ(echo(s, out, err, "evalf(pi) == pi"), "false");
+    EXPECT_EQ(echo(s, out, err, "0.1*x == x/10"), "true");
+    EXPECT_EQ(echo(s, out, err, "0.1*0.1*x == 0.01*x"), "true");
+    EXPECT_EQ(echo(s, out, err, "[0.5, 0.1 + 0.2] == [1/2, 0.3]"), "true");
+    // digits: D = 40 prints at most 40 digits
+    echo(s, out, err, "digits(40)");
+    EXPECT_EQ(echo(s, out, err, "evalf(pi)"), "3.141592653589793238462643383279502884197");
+    EXPECT_EQ(echo(s, out, err, "0.01"), "0.01");
+    EXPECT_EQ(echo(s, out, err, "0.1*0.1"), "0.01");
+    EXPECT_EQ(echo(s, out, err, "0.1 + 0.2 == 0.3"), "true");
+    // at 15 digits (a double's format)
+    echo(s, out, err, "digits(15)");
+    EXPECT_EQ(echo(s, out, err, "1/3.0"), "0.333333333333333");
+    EXPECT_EQ(echo(s, out, err, "0.1 + 0.2 == 0.3"), "true");
+}
+
+// simplify reaches the canonical form in the number field of the square roots of rationals,
+// where the zero test decides: quotients and products of a + b sqrt(n) come out with a
+// denominator free of radicals, equal inputs to the same text.
+TEST(Equality, SimplifyReachesTheFieldOfTheSquareRoots) {
+    std::ostringstream out, err;
+    session s(out, err);
+    EXPECT_EQ(echo(s, out, err, "simplify((3 + 2*sqrt(2))/(2 + sqrt(2))^2)"), "1/2");
+    EXPECT_EQ(echo(s, out, err, "simplify(1/(1 + sqrt(2)))"), "-1 + sqrt(2)");
+    EXPECT_EQ(echo(s, out, err, "simplify((5 + 2*sqrt(6))/(sqrt(2) + sqrt(3))^2)"), "1");
+    EXPECT_EQ(echo(s, out, err, "simplify((7 - 4*sqrt(3))*(2 + sqrt(3))^2)"), "1");
+    // held-out style: u*v/v for u, v in Q(sqrt(2), sqrt(3), sqrt(5)) from a fixed sequence
+    const char* roots[] = {"sqrt(2)", "sqrt(3)", "sqrt(5)", "sqrt(6)", "sqrt(10)"};
+    unsigned seed = 7;
+    auto next = [&] { return (seed = seed * 1103515245u + 12345u) >> 16; };
+    for (int k = 0; k < 12; ++k) {
+        auto element = [&] {
+            std::string e = std::to_string(long(next() % 7) - 3);
+            for (int j = 0; j < 2; ++j)
+                e += " + " + std::to_string(long(next() % 5) + 1) + "/" + std::to_string(long(next() % 3) + 1) +
+                     "*" + roots[next() % 5];
+            return "(" + e + ")";
+        };
+        const std::string u = element(), v = element(), w = element();
+        const std::string lhs = "simplify(expand(" + u + "*" + v + "^2)/(" + v + "*expand(" + v + "*" + w + "))*" + w +
+                                ")";
+        const std::string canonical = echo(s, out, err, "simplify(" + u + ")");
+        EXPECT_EQ(echo(s, out, err, lhs), canonical) << lhs;
+        EXPECT_EQ(echo(s, out, err, lhs + " == " + u), "true") << lhs;
+    }
+}
+
+}  // namespace

@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 
+#include "scalar/floats.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "syntax/parser.h"
@@ -314,8 +315,9 @@ equality decide_vectors(const ex& x, const ex& y) {
 
 equality compare_values(const value& a, const value& b) {
     if (a.is_ex() && b.is_ex()) {
-        const ex& x = a.as_ex();
-        const ex& y = b.as_ex();
+        // floats as the decimals they print as, compared exactly (scalar/floats.h; docs/language.md, "Floats")
+        const ex x = floats_as_decimals(a.as_ex());
+        const ex y = floats_as_decimals(b.as_ex());
         // vectors and scalars of vectors, literals inside dot products too ((r0 . [0, 0, 1])
         // against ([0, 0, 1] . r0) was compared as trees and answered false): exact, by components
         if ((is_vector_ex(a) || is_vector_ex(b)) && !is_a<GiNaC::relational>(x) && !is_a<GiNaC::relational>(y))
@@ -347,7 +349,8 @@ equality compare_values(const value& a, const value& b) {
         const element& v = b.as_element();
         if (u.parent().name() != v.parent().name()) return known(false);
         std::vector<equality> parts;
-        for (std::size_t k = 0; k < u.dim(); ++k) parts.push_back(decide(u[k] - v[k]));
+        for (std::size_t k = 0; k < u.dim(); ++k)
+            parts.push_back(decide(floats_as_decimals(u[k]) - floats_as_decimals(v[k])));
         return all_of(parts);
     }
     if (a.is_element() && b.is_ex()) {  // never one holding a matrix (an element of matrices cannot be formed)

@@ -477,12 +477,6 @@ ex solve_unwitnessed(const cauchy_problem& P) {
     return problem_has_float(P) ? GiNaC::evalf(x) : x;
 }
 
-bool has_float(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_crational()) return true;
-    return false;
-}
-
 double rounding_tolerance() { return std::pow(10.0, 5 - long(GiNaC::Digits)); }
 
 namespace {

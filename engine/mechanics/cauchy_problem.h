@@ -31,6 +31,7 @@
 #include <ginac/ginac.h>
 
 #include "mechanics/operator_ode.h"
+#include "scalar/floats.h"
 
 namespace symrep::mechanics {
 
@@ -117,8 +118,8 @@ struct solution_check {
 /// coordinate-free, at a point (seen nonzero) or by components (vector equality, see
 /// vector.h). With floating-point numbers, exact up to rounding (solution_check::rounding).
 solution_check check(const cauchy_problem& P, const GiNaC::ex& s);
-/// True when e holds a floating-point number (a value read as 9.81 or 1e-3).
-bool has_float(const GiNaC::ex& e);
+/// has_float (a value read as 9.81 or 1e-3): scalar/floats.h.
+using symrep::has_float;
 
 /// The relative size taken as rounding by check(): 10^(5 - Digits) (1e-12 at
 /// GiNaC's default of 17 digits: floats carry ~16, a few are lost in the sums).

@@ -2,6 +2,7 @@
 #include "numeric/reference.h"
 #include "numeric/quadrature.h"
 #include "numeric/certified.h"
+#include "scalar/floats.h"
 
 #include <cln/float.h>
 #include <cln/complex.h>
@@ -70,57 +71,8 @@ long double to_long_double(const cln::cl_R& r) {
 
 }  // namespace
 
-namespace {
-
-GiNaC::numeric decimal_of(const cln::cl_R& r) {
-    if (GiNaC::numeric(cln::cl_N(r)).is_rational()) return GiNaC::numeric(cln::cl_N(r));
-    std::ostringstream os;
-    os << GiNaC::numeric(cln::cl_N(r));
-    const std::string text = os.str();  // -1.25e-7, 3.0, 1.0E300
-    cln::cl_I mantissa = 0;
-    long exponent = 0, i = 0;
-    bool negative = false, point = false;
-    if (i < long(text.size()) && (text[i] == '-' || text[i] == '+')) negative = text[i++] == '-';
-    for (; i < long(text.size()); ++i) {
-        const char c = text[i];
-        if (c >= '0' && c <= '9') {
-            mantissa = mantissa * 10 + (c - '0');
-            if (point) --exponent;
-        } else if (c == '.') {
-            point = true;
-        } else if (c == 'e' || c == 'E') {
-            exponent += std::stol(text.substr(i + 1));
-            break;
-        } else {
-            return GiNaC::numeric(cln::cl_N(cln::rational(r)));  // not a plain decimal: its exact value
-        }
-    }
-    const cln::cl_RA m = negative ? cln::cl_RA(-mantissa) : cln::cl_RA(mantissa);
-    // (cln::expt_pos(x, 0) does not return: 1.23456789E8 has exponent 0 here)
-    const cln::cl_RA v = exponent == 0  ? m
-                         : exponent > 0 ? m * cln::expt_pos(cln::cl_I(10), exponent)
-                                        : m / cln::expt_pos(cln::cl_I(10), -exponent);
-    return GiNaC::numeric(cln::cl_N(v));
-}
-
-struct decimal_floats : GiNaC::map_function {
-    GiNaC::ex operator()(const GiNaC::ex& e) override {
-        if (GiNaC::is_a<GiNaC::numeric>(e)) {
-            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
-            if (n.is_rational()) return e;
-            const cln::cl_N z = n.to_cl_N();
-            return decimal_of(cln::realpart(z)) + GiNaC::I * decimal_of(cln::imagpart(z));
-        }
-        return e.map(*this);
-    }
-};
-
-}  // namespace
-
-GiNaC::ex decimal_floats_of(const GiNaC::ex& e) {
-    decimal_floats f;
-    return f(e);
-}
+// the decimal each float prints as (scalar/floats.h)
+GiNaC::ex decimal_floats_of(const GiNaC::ex& e) { return floats_as_decimals(e); }
 
 GiNaC::ex exact_floats_of(const GiNaC::ex& e) {
     exact_floats f;
@@ -174,30 +126,7 @@ namespace {
 
 struct rounder : GiNaC::map_function {
     long digits;
-    GiNaC::numeric round(const GiNaC::numeric& n) const {
-        const cln::cl_R r = cln::the<cln::cl_R>(n.to_cl_N());
-        if (cln::zerop(r) || n.is_rational()) return n;
-        // m * 10^k with digits decimal digits in m, then read back with that many digits
-        const cln::cl_RA q = cln::rational(r);
-        const cln::cl_RA a = cln::abs(q);
-        // log10 a within 1, also below 1: from floor(a) alone every number below 10^-digits
-        // became m = 0, and so 0 (1e-200 in a scene's result printed as 0; issue 27)
-        long k = decimal_exponent(n) - digits;
-        auto scaled = [&](long kk) -> cln::cl_RA {
-            // (expt_pos needs a positive exponent: at 0 it does not return)
-            if (kk == 0) return a;
-            return kk > 0 ? a / cln::expt_pos(cln::cl_I(10), kk) : a * cln::expt_pos(cln::cl_I(10), -kk);
-        };
-        cln::cl_I m = cln::round1(scaled(k));
-        const cln::cl_I limit = cln::expt_pos(cln::cl_I(10), digits);
-        while (m >= limit) m = cln::round1(scaled(++k));
-        while (m * 10 < limit) m = cln::round1(scaled(--k));  // a > 0: m reaches limit/10
-        std::ostringstream os;
-        if (cln::minusp(q)) os << "-";
-        os << GiNaC::numeric(m) << "e" << k;
-        const digits_scope scope(digits);
-        return GiNaC::numeric(os.str().c_str());
-    }
+    GiNaC::numeric round(const GiNaC::numeric& n) const { return round_float_digits(n, digits); }
     GiNaC::ex operator()(const GiNaC::ex& e) override {
         if (GiNaC::is_a<GiNaC::numeric>(e)) {
             const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);

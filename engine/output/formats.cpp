@@ -9,6 +9,7 @@
 #include "core/error.h"
 
 #include "output/printer.h"
+#include "scalar/floats.h"
 #include "vector/vector.h"
 
 namespace symrep::output {
@@ -28,6 +29,7 @@ struct out_t {
 };
 
 std::string num_text(const numeric& x) {
+    if (x.is_real() && !x.is_rational()) return float_text(x);  // the float model (scalar/floats.h)
     std::ostringstream os;
     os << x;
     return os.str();

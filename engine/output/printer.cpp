@@ -1,6 +1,7 @@
 // symrep/output/printer.cpp -- canonical printing (see printer.h for the rules).
 #include "output/printer.h"
 
+#include "scalar/floats.h"
 #include "scalar/scalar.h"
 #include "vector/vector.h"
 
@@ -53,9 +54,7 @@ printed pr_real(const numeric& x) {
         if (x.is_integer()) return {t, neg ? l_product : l_atom};
         return {t, l_product};
     }
-    std::ostringstream os;
-    os << ex(x);
-    return {os.str(), x.is_negative() ? l_product : l_atom};
+    return {float_text(x), x.is_negative() ? l_product : l_atom};  // the float model (scalar/floats.h)
 }
 
 printed pr_numeric(const numeric& x) {

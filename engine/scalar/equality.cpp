@@ -126,6 +126,11 @@ bool exactly_nonzero_factor(const GiNaC::ex& f) {
 
 zero_decision decide_zero(const GiNaC::ex& x) {
     zero_decision d;
+    if (GiNaC::is_a<GiNaC::numeric>(x)) {  // a number (1/10^30, a float): decided exactly, whatever its size
+        d.is_zero = x.is_zero() ? truth::yes : truth::no;
+        if (!x.is_zero()) d.value = x;
+        return d;
+    }
     // a constant c r y with c, r nonzero numbers (a rational, sqrt of a positive rational) is 0
     // exactly when y is: decided on y, whose value is not scaled down to below the witness's
     // floor by c (the pivots of a scene with the exact rationals of doubles are 1e-28 sqrt(...)).

@@ -10,6 +10,8 @@
 //              digits, is the same nonzero number to 20 digits and larger than
 //              10^-25 in size: an expression that is nonzero at a point is not
 //              identically 0;
+//   A number (no symbols: a rational or a float, of any size) is decided at once: no
+//   when it is not 0 (1/10^30 is not 0).
 //   - unknown: neither. The language reports this as undecided, never as
 //              "different" (docs/language.md, "Equality").
 // An evaluation that is not numeric, or that fails (a pole, log(0)), is no

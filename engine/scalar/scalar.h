@@ -155,6 +155,13 @@ GiNaC::ex in_square_root_field(const GiNaC::ex& c, bool rational_bases = false);
 /// quasi-polynomial whose coefficients hold one square root, whatever form the solver's
 /// pivots left them in.
 GiNaC::ex simplified_square_roots(const GiNaC::ex& c, const GiNaC::ex& t, bool rational_bases = false);
+/// c in the number field of its square roots of rational numbers, Q(sqrt(b_1), ..., sqrt(b_k))
+/// over its other atoms (symbols, functions, other roots): the roots as symbols q_i, numerator and
+/// denominator reduced modulo q_i^2 - b_i, the denominator freed of each q_i in turn by its
+/// conjugate, then one fraction. With the b_i over primes (expand_rational_logs) this is the
+/// canonical form the zero test works in: (3 + 2 sqrt(2))/(2 + sqrt(2))^2 -> 1/2. c unchanged
+/// without such roots, with more than max_roots of them, or where a conjugate product is 0.
+GiNaC::ex in_square_roots_field(const GiNaC::ex& c, std::size_t max_roots = 6);
 
 /// Half-integer powers of positive rationals in each product made one
 /// c sqrt(b), b a square-free integer: sqrt(12) = 2 sqrt(3), sqrt(26) sqrt(34) = 2 sqrt(221)

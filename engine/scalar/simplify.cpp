@@ -567,7 +567,8 @@ GiNaC::ex simplify_scalar(const GiNaC::ex& x) {
     guard_expansion(x, "simplify", false);
     const GiNaC::ex y = expand_rational_logs(trig_of_arctangents(GiNaC::expand(x)));
     guard_expansion(y, "simplify", true);
-    const GiNaC::ex plain = GiNaC::normal(GiNaC::expand(y));
+    // the square roots of rationals in their number field: what the zero test decides, simplify reaches
+    const GiNaC::ex plain = in_square_roots_field(GiNaC::normal(GiNaC::expand(y)));
     if (!y.has(GiNaC::sin(GiNaC::wild())) && !y.has(GiNaC::cos(GiNaC::wild())) && !has_tan_or_hyperbolic(y))
         return canonical_radicals(plain);
     const GiNaC::ex z = GiNaC::normal(expand_rational_logs(trig_exponential_form(y)));
@@ -577,7 +578,7 @@ GiNaC::ex simplify_scalar(const GiNaC::ex& x) {
     for (const GiNaC::ex& s : after)
         if (!before.count(s)) return canonical_radicals(plain);  // the formal exponentials remain
     if (z.has(GiNaC::I) && !y.has(GiNaC::I)) return canonical_radicals(plain);
-    return canonical_radicals(z);
+    return canonical_radicals(in_square_roots_field(z));
 }
 
 }  // namespace symrep

@@ -71,3 +71,49 @@ ex simplified_square_roots(const ex& c, const ex& t, bool rational_bases) {
 }
 
 }  // namespace symrep
+
+namespace symrep {
+
+// the number field of the square roots of rationals in c (scalar.h)
+ex in_square_roots_field(const ex& c, std::size_t max_roots) {
+    const square_roots_as_symbols r = with_square_roots_as_symbols(c, true);
+    std::vector<std::pair<GiNaC::numeric, ex>> field;  // b_i, q_i
+    GiNaC::exmap others;                                // the roots of non-numbers back as they were
+    for (const auto& [b, q] : r.roots) {
+        if (GiNaC::is_a<GiNaC::numeric>(b) && GiNaC::ex_to<GiNaC::numeric>(b).is_rational())
+            field.emplace_back(GiNaC::ex_to<GiNaC::numeric>(b), q);
+        else
+            others[q] = GiNaC::sqrt(b);
+    }
+    if (field.empty() || field.size() > max_roots) return c;
+    for (int pass = 0; pass < 2 && !others.empty(); ++pass)  // a base may hold an earlier root
+        for (auto& [q, s] : others) s = s.subs(others, GiNaC::subs_options::no_pattern);
+    const ex e = others.empty() ? r.e : r.e.subs(others, GiNaC::subs_options::no_pattern);
+    // p modulo every q_i^2 - b_i: each power q^k as b^(k div 2) q^(k mod 2)
+    auto reduce = [&](ex p) {
+        for (const auto& [b, q] : field) {
+            p = GiNaC::expand(p);
+            const int n = p.degree(q);
+            if (n < 2) continue;
+            ex out = 0;
+            for (int k = 0; k <= n; ++k) out += p.coeff(q, k) * GiNaC::pow(GiNaC::ex(b), k / 2) * GiNaC::pow(q, k % 2);
+            p = out;
+        }
+        return GiNaC::expand(p);
+    };
+    const ex nd = GiNaC::normal(e).numer_denom();
+    ex N = reduce(nd.op(0)), D = reduce(nd.op(1));
+    for (const auto& [b, q] : field) {
+        const ex d1 = D.coeff(q, 1);
+        if (d1.is_zero()) continue;
+        const ex conjugate = D.coeff(q, 0) - d1 * q;  // (d0 + d1 q)(d0 - d1 q) = d0^2 - d1^2 b
+        N = reduce(N * conjugate);
+        D = reduce(D * conjugate);
+        if (D.is_zero()) return c;
+    }
+    GiNaC::exmap back;
+    for (const auto& [b, q] : field) back[q] = GiNaC::sqrt(GiNaC::ex(b));
+    return GiNaC::normal(N / D).subs(back, GiNaC::subs_options::no_pattern);
+}
+
+}  // namespace symrep
