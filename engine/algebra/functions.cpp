@@ -81,6 +81,59 @@ long falling(long k, unsigned j) {
 
 }  // namespace
 
+namespace {
+
+// Polynomials in X as coefficient lists (index = power).
+using poly = std::vector<ex>;
+
+poly poly_mul(const poly& a, const poly& b) {
+    if (a.empty() || b.empty()) return {};
+    poly c(a.size() + b.size() - 1, ex(0));
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
+    for (ex& x : c) x = GiNaC::expand(x);
+    return c;
+}
+
+// a mod F, F monic of degree d (the coefficients of a may hold functions of t: only the
+// linear steps of the division, no normal()).
+poly reduce_mod(poly a, const poly& F) {
+    const std::size_t d = F.size() - 1;
+    for (std::size_t k = a.size(); k-- > d;) {
+        const ex lead = a[k];
+        if (lead.is_zero()) continue;
+        for (std::size_t i = 0; i <= d; ++i) a[k - d + i] = GiNaC::expand(a[k - d + i] - lead * F[i]);
+    }
+    a.resize(d, ex(0));
+    return a;
+}
+
+// A^-1 mod F (F irreducible, A coprime to F): h with A h = 1 mod F, from the d x d system.
+poly inverse_mod(const poly& A, const poly& F, const std::string& where) {
+    const std::size_t d = F.size() - 1;
+    std::vector<std::vector<ex>> M(d, std::vector<ex>(d, ex(0)));
+    poly xj{ex(1)};
+    for (std::size_t j = 0; j < d; ++j) {
+        const poly col = reduce_mod(poly_mul(A, xj), F);
+        for (std::size_t i = 0; i < d; ++i) M[i][j] = tidy(col[i]);
+        xj.insert(xj.begin(), ex(0));
+    }
+    std::vector<ex> e(d, ex(0));
+    e[0] = 1;
+    const auto h = solve_linear(std::move(M), std::move(e));
+    if (!h) throw closed_form_error(where + ": a factor of the minimal polynomial is not coprime to the rest");
+    return *h;
+}
+
+poly coefficients_in(const ex& f, const GiNaC::symbol& X) {
+    const ex e = GiNaC::expand(f);
+    poly c(std::size_t(e.degree(X)) + 1, ex(0));
+    for (std::size_t k = 0; k < c.size(); ++k) c[k] = e.coeff(X, int(k));
+    return c;
+}
+
+}  // namespace
+
 // Hermite interpolation on the roots of the minimal polynomial (II.1.12, Cor. II.1.1).
 coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const {
     check_size(w, f.name.c_str());
@@ -89,111 +142,142 @@ coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const 
     const int N = q.degree(X);
     const std::string where = f.name + " in " + name();
     const std::vector<root> roots = roots_of(q, X, where);
-    bool cubic = false, simple = true;
+
+    // The interpolant of degree < n on the given roots (their multiplicities summing to n):
+    // the linear system of Hermite's conditions Re, Im of p^{(j)}(z) = f^{(j)}(z).
+    const auto hermite = [&](const std::vector<root>& rs, int n) {
+        std::vector<std::vector<ex>> A;
+        std::vector<ex> b;
+        for (const root& r : rs) {
+            // powers z^p of z = re + i im, p = 0..n-1
+            std::vector<cplx<ex>> zp{cplx<ex>(ex(1), ex(0))};
+            const cplx<ex> z(r.re, r.im);
+            for (int p = 1; p < n; ++p) {
+                cplx<ex> nz = zp.back() * z;
+                zp.emplace_back(tidy(nz.re), tidy(nz.im));
+            }
+            for (unsigned j = 0; j < r.multiplicity; ++j) {
+                ex fre, fim;
+                f.value(r.re, r.im, j, fre, fim);
+                std::vector<ex> row_re(n, ex(0)), row_im(n, ex(0));
+                for (int k = int(j); k < n; ++k) {  // p^{(j)}(z) = sum_k c_k k!/(k-j)! z^{k-j}
+                    const long ff = falling(k, j);
+                    row_re[k] = ff * zp[k - j].re;
+                    row_im[k] = ff * zp[k - j].im;
+                }
+                A.push_back(std::move(row_re));
+                b.push_back(fre);
+                if (!r.im.is_zero()) {
+                    A.push_back(std::move(row_im));
+                    b.push_back(fim);
+                }
+            }
+        }
+        auto c = solve_linear(std::move(A), std::move(b));
+        if (!c)
+            throw closed_form_error(where + ": the Hermite interpolation conditions at the roots of " + str(q) +
+                                    " are singular (roots not distinct for these values)");
+        return *c;
+    };
+
+    std::vector<root> rest;
+    std::vector<ex> cubics;  // the distinct cubic factors, each simple
     for (const root& r : roots) {
-        cubic = cubic || r.factor.degree(X) == 3;
-        simple = simple && r.multiplicity == 1;
+        if (r.factor.degree(X) != 3) {
+            rest.push_back(r);
+            continue;
+        }
+        if (r.multiplicity > 1)
+            // Hermite's conditions on Cardano's radicals: refused at once
+            throw closed_form_error(where + ": the cubic factor " + str(r.factor) + " of the minimal polynomial " +
+                                    "is repeated (multiplicity " + std::to_string(r.multiplicity) +
+                                    "); Hermite interpolation on Cardano's radicals is not done here");
+        bool seen_factor = false;
+        for (const ex& F : cubics) seen_factor = seen_factor || F.is_equal(r.factor);
+        if (!seen_factor) cubics.push_back(r.factor);
     }
-    if (cubic && !simple) {
-        // Hermite's conditions on Cardano's radicals: a linear system that does not finish in
-        // minutes; refused at once
-        for (const root& r : roots)
-            if (r.factor.degree(X) == 3 && r.multiplicity > 1)
-                throw closed_form_error(where + ": the cubic factor " + str(r.factor) + " of the minimal polynomial " +
-                                        "is repeated (multiplicity " + std::to_string(r.multiplicity) +
-                                        "); Hermite interpolation on Cardano's radicals is not done here");
+    if (cubics.empty()) {
+        const std::vector<ex> c = hermite(roots, N);
+        ex p = 0;
+        for (int k = 0; k < N; ++k) p += c[k] * GiNaC::pow(X, k);
+        coeffs r = evaluate_polynomial(p, X, w);
+        for (auto& x : r) x = tidy(x);
+        return r;
     }
-    if (cubic && simple) {
-        // (II.1.12) with simple roots, Lagrange's form: p(X) = sum_z f(z) (q(X)/(X - z))/q'(z),
-        // a pair a +- i b once as 2 Re. Each term stays as small as its root (Cardano's
-        // radicals, cos(theta/3 - 2 pi k/3)), where the general linear system mixes them all.
-        // The radicals and functions of the roots (Cardano's cube root, sqrt(3), cos(theta/3))
-        // are temporary real symbols while q'(z) and q(X)/(X - z) are formed: normal() then
-        // works on rational functions of a few symbols instead of nested radicals (seconds
-        // instead of minutes for a cubic times a quadratic); they go back at the end.
-        GiNaC::exmap back;
-        std::map<ex, ex, GiNaC::ex_is_less> seen;
-        std::vector<ex> qc(N + 1);
-        for (int k = 0; k <= N; ++k) qc[k] = q.coeff(X, k);
-        std::vector<ex> c(N, ex(0));
+    // (II.1.12) by the Chinese remainder theorem: q = G F_1 ... F_s with F_i the simple cubic
+    // factors. p_G interpolates on the roots of G (the linear system above, no radicals of a
+    // cubic in it); on each F, Lagrange's form p_F = sum_z f(z) (F(X)/(X - z))/F'(z), whose
+    // coefficients b_k(z)/F'(z) are reduced modulo F to polynomials g_k of degree <= 2 in the
+    // root (one exact form per factor, however the roots are written), a pair a +- i b once as
+    // 2 Re; then p = p_M + M ((p_F - p_M) M^-1 mod F), M the modulus so far. The radicals and
+    // functions of the roots (Cardano's cube root, sqrt(3), cos(theta/3)) are temporary real
+    // symbols meanwhile (normal() then works on a few symbols instead of nested radicals); they
+    // go back at the end.
+    GiNaC::exmap back;
+    std::map<ex, ex, GiNaC::ex_is_less> seen;
+    poly M{ex(1)}, P;
+    {
+        ex G = GiNaC::expand(q);
+        for (const ex& F : cubics) G = GiNaC::quo(G, F, X);
+        const int nG = G.degree(X);
+        if (nG > 0) {
+            P = hermite(rest, nG);
+            for (ex& x : P) x = radicals_as_symbols(x, seen, back);
+            M = coefficients_in(G, X);
+        }
+    }
+    for (const ex& Fx : cubics) {
+        const poly F = coefficients_in(Fx, X);
+        // F(X)/(X - Z) = X^2 + (Z + F_2) X + (Z^2 + F_2 Z + F_1); H = 1/F'(Z) mod F
+        const std::vector<poly> b{{F[1], F[2], ex(1)}, {F[2], ex(1)}, {ex(1)}};
+        const poly H = inverse_mod({F[1], 2 * F[2], ex(3)}, F, where);
+        std::vector<poly> g;
+        for (const poly& bk : b) {
+            poly gk = reduce_mod(poly_mul(bk, H), F);
+            for (ex& x : gk) x = tidy(x);
+            g.push_back(gk);
+        }
+        poly pF(3, ex(0));
         for (const root& r : roots) {
+            if (!r.factor.is_equal(Fx)) continue;
             const cplx<ex> z(radicals_as_symbols(r.re, seen, back), radicals_as_symbols(r.im, seen, back));
-            // b_{N-1} = 1, b_{k-1} = q_k + z b_k (synthetic division); q'(z) by Horner
-            std::vector<cplx<ex>> bq(N, cplx<ex>(ex(0), ex(0)));
-            bq[N - 1] = cplx<ex>(ex(1), ex(0));
-            for (int k = N - 1; k > 0; --k) {
-                const cplx<ex> nb = z * bq[k] + cplx<ex>(qc[k], ex(0));
-                bq[k - 1] = cplx<ex>(tidy(nb.re), tidy(nb.im));
-            }
-            cplx<ex> dq(ex(0), ex(0));
-            for (int k = N; k >= 1; --k) {
-                const cplx<ex> nd = dq * z + cplx<ex>(ex(k) * qc[k], ex(0));
-                dq = cplx<ex>(tidy(nd.re), tidy(nd.im));
-            }
             ex fre, fim;
-            f.value(r.re, r.im, 0, fre, fim);  // at the root itself (log decides its sign there)
-            fre = radicals_as_symbols(fre, seen, back);
-            fim = radicals_as_symbols(fim, seen, back);
-            // the term f(z) g_k(z), g_k = b_k/q'(z): the numbers g_k tidied one by one, f(z)
-            // (a symbol) kept outside (one fraction of all terms would cost minutes)
-            const ex den = tidy(dq.re * dq.re + dq.im * dq.im);
-            for (int k = 0; k < N; ++k) {
-                const ex gre = tidy((bq[k].re * dq.re + bq[k].im * dq.im) / den);
-                const ex gim = tidy((bq[k].im * dq.re - bq[k].re * dq.im) / den);
-                const ex term = fre * gre - fim * gim;  // Re(f(z) g_k(z))
-                c[k] += r.im.is_zero() ? term : 2 * term;
+            f.value(r.re, r.im, 0, fre, fim);
+            const cplx<ex> fz(radicals_as_symbols(fre, seen, back), radicals_as_symbols(fim, seen, back));
+            for (int k = 0; k < 3; ++k) {
+                cplx<ex> gz(ex(0), ex(0)), zj(ex(1), ex(0));  // g_k(z) by its powers
+                for (const ex& c : g[std::size_t(k)]) {
+                    gz = gz + cplx<ex>(c, ex(0)) * zj;
+                    zj = zj * z;
+                }
+                const cplx<ex> term = fz * gz;
+                pF[std::size_t(k)] += GiNaC::expand(r.im.is_zero() ? term.re : 2 * term.re);
             }
         }
-        coeffs out;
-        if (is_power_basis_generator(w)) {  // the coordinates are the coefficients
-            out.assign(c.begin(), c.end());
-        } else {
-            ex p = 0;
-            for (int k = 0; k < N; ++k) p += c[k] * GiNaC::pow(X, k);
-            out = evaluate_polynomial(p, X, w);
-        }
-        // the radicals' values put back as they are (tidy on the nested radicals would take
-        // minutes and shorten nothing)
-        for (auto& x : out) x = x.subs(back, GiNaC::subs_options::no_pattern);
-        return out;
+        // CRT: p = p_M + M ((p_F - p_M) M^-1 mod F)
+        poly diff = pF;
+        const poly PM = reduce_mod(P, F);
+        for (std::size_t k = 0; k < diff.size() && k < PM.size(); ++k) diff[k] = diff[k] - PM[k];
+        const poly D = reduce_mod(poly_mul(diff, inverse_mod(M, F, where)), F);
+        const poly MD = poly_mul(M, D);
+        P.resize(std::max(P.size(), MD.size()), ex(0));
+        for (std::size_t k = 0; k < MD.size(); ++k) P[k] = GiNaC::expand(P[k] + MD[k]);
+        M = poly_mul(M, F);
     }
-    // conditions: rows of A (coefficients of c_0..c_{N-1}) and right-hand sides
-    std::vector<std::vector<ex>> A;
-    std::vector<ex> b;
-    for (const root& r : roots) {
-        // powers z^p of z = re + i im, p = 0..N-1
-        std::vector<cplx<ex>> zp{cplx<ex>(ex(1), ex(0))};
-        const cplx<ex> z(r.re, r.im);
-        for (int p = 1; p < N; ++p) {
-            cplx<ex> nz = zp.back() * z;
-            zp.emplace_back(tidy(nz.re), tidy(nz.im));
-        }
-        for (unsigned j = 0; j < r.multiplicity; ++j) {
-            ex fre, fim;
-            f.value(r.re, r.im, j, fre, fim);
-            std::vector<ex> row_re(N, ex(0)), row_im(N, ex(0));
-            for (int k = int(j); k < N; ++k) {  // p^{(j)}(z) = sum_k c_k k!/(k-j)! z^{k-j}
-                const long ff = falling(k, j);
-                row_re[k] = ff * zp[k - j].re;
-                row_im[k] = ff * zp[k - j].im;
-            }
-            A.push_back(std::move(row_re));
-            b.push_back(fre);
-            if (!r.im.is_zero()) {
-                A.push_back(std::move(row_im));
-                b.push_back(fim);
-            }
-        }
+    std::vector<ex> c(N, ex(0));
+    for (std::size_t k = 0; k < P.size() && k < std::size_t(N); ++k) c[k] = P[k];
+    coeffs out;
+    if (is_power_basis_generator(w)) {  // the coordinates are the coefficients
+        out.assign(c.begin(), c.end());
+    } else {
+        ex p = 0;
+        for (int k = 0; k < N; ++k) p += c[k] * GiNaC::pow(X, k);
+        out = evaluate_polynomial(p, X, w);
     }
-    auto c = solve_linear(std::move(A), std::move(b));
-    if (!c)
-        throw closed_form_error(where + ": the Hermite interpolation conditions at the roots of " +
-                                str(q) + " are singular (roots not distinct for these values)");
-    ex p = 0;
-    for (int k = 0; k < N; ++k) p += (*c)[k] * GiNaC::pow(X, k);
-    coeffs r = evaluate_polynomial(p, X, w);
-    for (auto& x : r) x = tidy(x);
-    return r;
+    // the radicals' values put back as they are (tidy on the nested radicals would take
+    // minutes and shorten nothing)
+    for (auto& x : out) x = x.subs(back, GiNaC::subs_options::no_pattern);
+    return out;
 }
 
 // Thm II.2.3: e^{w t} = sum_k w^k t^k / k!, by interpolation of f(lambda) = e^{lambda t}:

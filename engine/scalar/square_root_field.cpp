@@ -25,6 +25,13 @@ ex in_square_root_field(const ex& c, bool rational_bases) {
     if (r.roots.size() != 1 || r.roots[0].first.has(GiNaC::I)) return c;  // several: left as it is
     const ex& root = r.roots[0].first;
     const ex& q = r.roots[0].second;
+    // the root inside another radical (Cardano's cube root of a + sqrt(D)) or inside a function
+    // (cos(acos(8 sqrt(13)/169)/3) of three real roots): not a polynomial in q; left as it is
+    for (auto it = r.e.preorder_begin(); it != r.e.preorder_end(); ++it)
+        if ((GiNaC::is_a<GiNaC::function>(*it) && it->has(q)) ||
+            (GiNaC::is_a<GiNaC::power>(*it) && it->op(0).has(q) &&
+             !(GiNaC::is_a<GiNaC::numeric>(it->op(1)) && GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer())))
+            return c;
     const ex nd = GiNaC::normal(r.e).numer_denom();
     auto reduce = [&](const ex& p) {  // p mod q^2 - A, as (p0, p1): p0 + p1 q
         const ex m = GiNaC::expand(GiNaC::rem(GiNaC::expand(p), GiNaC::pow(q, 2) - root, q, false));

@@ -58,6 +58,34 @@ ex apply_operator(const ex& poly, const GiNaC::symbol& l, const ex& x, const GiN
     return out;
 }
 
+// The residual of a response over the roots of an irreducible cubic (Cardano's radicals, or
+// cos(theta/3 - 2 pi k/3) for three real roots), whose relations (such as the one cos(2 pi/9)
+// satisfies) the exact zero test does not know: without parameters, 0 at 60 digits at
+// t = 1/3, 1 and 7/5, each to 10^-45 of the size of its terms (as inverse_laplace checks its
+// Cardano inverses numerically).
+bool cubic_roots_only_numeric(const ex& residual, const GiNaC::symbol& t) {
+    bool cubic = false;
+    for (auto it = residual.preorder_begin(); it != residual.preorder_end(); ++it) {
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t)) return false;
+        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+            GiNaC::ex_to<GiNaC::numeric>(it->op(1)).denom() == 3)
+            cubic = true;
+        if (GiNaC::is_a<GiNaC::function>(*it) && !it->has(t) && it->has(GiNaC::Pi)) cubic = true;  // cos(2 pi/9)
+    }
+    if (!cubic) return false;
+    const ex e = GiNaC::expand(residual);
+    for (const GiNaC::numeric& t0 : {GiNaC::numeric(1, 3), GiNaC::numeric(1), GiNaC::numeric(7, 5)}) {
+        GiNaC::numeric v, size = 1, part;
+        if (!evaluate_numeric(e.subs(t == t0), 60, v)) return false;
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+            if (!evaluate_numeric((GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e).subs(t == t0), 60, part)) return false;
+            size += GiNaC::abs(part);
+        }
+        if (GiNaC::abs(v) > GiNaC::numeric("1e-45") * size) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 ex system_polynomial(const std::vector<ex>& a, const GiNaC::symbol& l) {
@@ -240,6 +268,7 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
         if (z.is_zero == truth::no)
             throw algebra_error("internal: a derived response does not satisfy the system (residual " +
                                 text(residual) + ", not 0 " + witness_text(z) + ")");
+        if (z.is_zero == truth::unknown && cubic_roots_only_numeric(residual, t)) continue;
         if (z.is_zero == truth::unknown)
             throw domain_error("response: the derived response is not proved to satisfy the system (the residual " +
                                text(residual) +
