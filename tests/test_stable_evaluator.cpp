@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "lang/interpreter.h"
@@ -355,15 +357,23 @@ TEST(StableEvaluator, ErrorBoundsOfLongPhasesHoldAtEveryPoint) {
 namespace {
 
 /// The value of the last statement of a script, as doubles (a number or a list of them).
+// a float by its printed decimal (CLN's to_double flushes a subnormal long float to 0)
+double as_double(const GiNaC::numeric& n) {
+    if (n.is_rational()) return n.to_double();
+    std::ostringstream os;
+    os << n;
+    return std::strtod(os.str().c_str(), nullptr);
+}
+
 std::vector<double> eval_script(const std::string& script) {
     std::ostringstream out, err;
     lang::session S(out, err);
     const lang::value v = S.evaluate(script);
     std::vector<double> x;
     if (v.is_list())
-        for (const lang::value& y : v.as_list()) x.push_back(GiNaC::ex_to<GiNaC::numeric>(y.as_ex()).to_double());
+        for (const lang::value& y : v.as_list()) x.push_back(as_double(GiNaC::ex_to<GiNaC::numeric>(y.as_ex())));
     else
-        x.push_back(GiNaC::ex_to<GiNaC::numeric>(v.as_ex()).to_double());
+        x.push_back(as_double(GiNaC::ex_to<GiNaC::numeric>(v.as_ex())));
     return x;
 }
 
@@ -447,4 +457,28 @@ TEST(EvalBuiltin, IntermediateUnderflowIsBoundedNotAnError) {
     EXPECT_EQ(eval_script("eval(w*exp(-w*t), [w = 1e300], t = 1)")[0], 0.0);
     EXPECT_NEAR(eval_script("eval((1 - exp(-w*t))/w, [w = 1e-300], t = 1)")[0], 1.0, 2.3e-16);
     EXPECT_NEAR(eval_script("eval((exp(-w*t) - 1)/w + exp(-w), [w = 10^300], t = 2)")[0], -1e-300, 2e-316);
+}
+
+TEST(EvalBuiltin, SubnormalResultsAreNumbersNotUnderflow) {
+    // issue 27 (bench/differential, constant w): a component of 1.95e-320 is a subnormal
+    // double, which CLN's double floats do not hold: GiNaC::numeric(1.95e-320) threw
+    // "floating-point underflow" and eval refused. Reference: the problem is linear in g, r0,
+    // v0, so r at data of 1e-103 is 1e-103 times r at data of 1 (a normal result); tolerance
+    // one subnormal ulp (4.9e-324) plus 1e-15 relative for the normal components.
+    const std::string P = "vector w, g, r0, v0\npositive w0\n"
+                          "s := solve(ode(r'' + 2*w x r' + w x (w x r) + w0^2*r = g, r(0) = r0, r'(0) = v0))\n";
+    const std::string W = "w = [0, 0, 1e-217], w0 = 1.1431868247891832], t = 3.7194156622246783)";
+    const auto one = eval_script(P + "eval(s, [g = [0, 0, 1], r0 = [0, 0, 1], v0 = [0, -0.67, 0.87], " + W);
+    const auto tiny = eval_script(P + "eval(s, [g = [0, 0, 1e-103], r0 = [0, 0, 1e-103], v0 = [0, -6.7e-104, 8.7e-104], " + W);
+    ASSERT_EQ(one.size(), 3u);
+    ASSERT_EQ(tiny.size(), 3u);
+    EXPECT_GT(std::abs(tiny[0]), 0.0);
+    EXPECT_LT(std::abs(tiny[0]), std::numeric_limits<double>::min());  // subnormal indeed
+    EXPECT_NEAR(tiny[0], one[0] * 1e-103, 1e-323);
+    for (int i = 1; i < 3; ++i) EXPECT_NEAR(tiny[i], one[i] * 1e-103, 1e-15 * std::abs(one[i]) * 1e-103) << i;
+    // the pieces: the exact value of the smallest subnormal, and a subnormal as a number
+    EXPECT_EQ(num::exact_rational(4.9406564584124654e-324), GiNaC::pow(GiNaC::numeric(2), -1074));
+    EXPECT_EQ(num::exact_rational(-0.1), GiNaC::numeric(-3602879701896397) / GiNaC::pow(GiNaC::numeric(2), 55));
+    EXPECT_EQ(as_double(num::from_double(1e-320)), 1e-320);
+    EXPECT_EQ(num::from_double(1e-320), num::exact_rational(1e-320));  // the double's exact value
 }

@@ -72,9 +72,9 @@ Eigen::VectorXd stlsq(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double
             if (active[std::size_t(c)]) idx.push_back(c);
         x.setZero();
         if (idx.empty()) break;
-        Eigen::MatrixXd As(A.rows(), Eigen::Index(idx.size()));
-        for (std::size_t j = 0; j < idx.size(); ++j) As.col(Eigen::Index(j)) = A.col(idx[j]);
-        const lsq r = least_squares(As, b);
+        Eigen::MatrixXd active_columns(A.rows(), Eigen::Index(idx.size()));
+        for (std::size_t j = 0; j < idx.size(); ++j) active_columns.col(Eigen::Index(j)) = A.col(idx[j]);
+        const lsq r = least_squares(active_columns, b);
         if (round == 0 && cond) *cond = r.cond;
         for (std::size_t j = 0; j < idx.size(); ++j) x(idx[j]) = r.x(Eigen::Index(j));
         bool changed = false;

@@ -11,6 +11,7 @@
 
 #include "algebra/walsh_hadamard.h"
 #include "core/error.h"
+#include "numeric/reference.h"
 #include "scalar/scalar.h"
 #include "identification/identify.h"
 #include "identification/operational_matrix.h"
@@ -167,7 +168,7 @@ std::string json_numbers(const std::vector<double>& xs) {
 
 list number_list(const std::vector<double>& xs) {
     list out;
-    for (double x : xs) out.push_back(value(GiNaC::ex(GiNaC::numeric(x))));
+    for (double x : xs) out.push_back(value(GiNaC::ex(num::from_double(x))));
     return out;
 }
 
@@ -284,8 +285,8 @@ void register_identification_builtins(registry& r) {
                                 "\"warning\": " + output::json_quote(rep.warning));
             list out;
             for (std::size_t k = 0; k < rep.points_q.size(); ++k)
-                out.push_back(value(list{value(GiNaC::ex(GiNaC::numeric(rep.points_q[k]))),
-                                         value(GiNaC::ex(GiNaC::numeric(rep.values_f[k])))}));
+                out.push_back(value(list{value(GiNaC::ex(num::from_double(rep.points_q[k]))),
+                                         value(GiNaC::ex(num::from_double(rep.values_f[k])))}));
             return out;
         });
     add_builtin(
@@ -340,7 +341,7 @@ void register_identification_builtins(registry& r) {
             const GiNaC::ex f = polynomial(rep.f, x);
             if (std::all_of(lin.begin(), lin.end(), [](const auto& k) { return k.has_value(); })) return f;
             list as;
-            for (double v : rep.a) as.push_back(value(GiNaC::ex(GiNaC::numeric(v))));
+            for (double v : rep.a) as.push_back(value(GiNaC::ex(num::from_double(v))));
             return list{value(f), value(as)};
         });
 }

@@ -66,9 +66,10 @@ const mechanics::cauchy_problem& problem_arg(const args_t& a, std::size_t i, con
 }
 
 value numbers(const ex& c, const builtin& b) {
-    if (!GiNaC::is_a<GiNaC::matrix>(c)) return value(ex(to_double(c, b, "the result")));
+    // (num::from_double: a subnormal result is a number too, not CLN's underflow)
+    if (!GiNaC::is_a<GiNaC::matrix>(c)) return value(ex(num::from_double(to_double(c, b, "the result"))));
     list l;
-    for (const ex& x : components(c)) l.push_back(value(ex(to_double(x, b, "the result"))));
+    for (const ex& x : components(c)) l.push_back(value(ex(num::from_double(to_double(x, b, "the result")))));
     return l;
 }
 
@@ -140,7 +141,9 @@ std::vector<Eigen::Vector3d> reduction_at(const reduction& r, const data_values&
     return out;
 }
 
-value triple_value(const Eigen::Vector3d& x) { return value(list{value(ex(x.x())), value(ex(x.y())), value(ex(x.z()))}); }
+value triple_value(const Eigen::Vector3d& x) {
+    return value(list{value(ex(num::from_double(x.x()))), value(ex(num::from_double(x.y()))), value(ex(num::from_double(x.z())))});
+}
 
 // Argument i as a vector of numbers (a literal [x, y, z] whose entries evaluate to reals).
 Eigen::Vector3d number_vector(const args_t& a, std::size_t i, const builtin& b, const std::string& what) {
@@ -254,7 +257,7 @@ value verify_reduction(const builtin& b, const args_t& a, context& c) {
             << "]; reduction " << seconds(v.closed_form_seconds) << ", " << num::stepper_name(opt.stepper) << " "
             << seconds(v.integration_seconds) << " (" << v.rhs_evaluations << " right-hand sides), setup "
             << seconds(prep) << "\n";
-    return value(ex(v.max_relative_difference));
+    return value(ex(num::from_double(v.max_relative_difference)));
 }
 
 }  // namespace
@@ -613,7 +616,7 @@ void register_mechanics_builtins(registry& r) {
                     << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("
                     << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
                     << "\n";
-            return value(ex(v.max_relative_difference));
+            return value(ex(num::from_double(v.max_relative_difference)));
         });
     add(r, "relative_motion", "relative_motion(mu, R0, V0, rho0, rho0', t = T)",
         "Exact relative orbital motion: a chaser seen from the LVLH frame (x radial, y along the track, z "

@@ -21,7 +21,21 @@ namespace symrep::num {
 
 GiNaC::numeric exact_rational(double x) {
     if (!std::isfinite(x)) throw domain_error("reference: input is not a finite number");
-    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(x))));
+    if (x == 0) return 0;
+    // x = m 2^(e - 53) with m an integer below 2^53 (frexp: no cl_DF, which refuses subnormals)
+    int e = 0;
+    const double f = std::frexp(x, &e);
+    const cln::cl_I m = cln::cl_I(static_cast<long long>(std::ldexp(f, 53)));
+    const long k = long(e) - 53;
+    const cln::cl_RA v = k >= 0 ? cln::cl_RA(cln::ash(m, k)) : cln::cl_RA(m / cln::ash(cln::cl_I(1), -k));
+    return GiNaC::numeric(cln::cl_N(v));
+}
+
+GiNaC::numeric from_double(double x) {
+    if (!std::isfinite(x)) throw domain_error("reference: input is not a finite number");
+    if (x == 0 || std::abs(x) >= std::numeric_limits<double>::min()) return GiNaC::numeric(x);
+    const cln::cl_RA v = cln::the<cln::cl_RA>(exact_rational(x).to_cl_N());
+    return GiNaC::numeric(cln::cl_N(cln::cl_float(v, cln::float_format(std::max(long(GiNaC::Digits), 16L)))));
 }
 
 namespace {

@@ -28,8 +28,16 @@ struct digits_scope {
     digits_scope& operator=(const digits_scope&) = delete;
 };
 
-/// The exact rational value of a double (finite; throws domain_error for inf/nan).
+/// The exact rational value of a double (finite, subnormals too; throws domain_error for
+/// inf/nan).
 GiNaC::numeric exact_rational(double x);
+
+/// A double as a GiNaC number: GiNaC::numeric(x) (a double float), except below the
+/// smallest normal double, which CLN's double floats do not hold (numeric(4.9e-324) throws
+/// "floating-point underflow"): there the double's exact value as a long float at the working
+/// precision (at least 16 digits, the smallest long float). A result
+/// of eval of 1e-320 is that number, not an error (issue 27). Throws domain_error for inf/nan.
+GiNaC::numeric from_double(double x);
 
 /// e with every floating-point number in it replaced by the exact rational it
 /// denotes (a float read from a script is a binary number of ~20 digits; CLN
