@@ -129,6 +129,20 @@ std::string warnings(const measured_system& s, double cond) {
     return out;
 }
 
+identification_report report_of(const measured_system& s, const linear_part& a, const std::vector<std::size_t>& unknown,
+                                unsigned degree, const Eigen::VectorXd& x, std::size_t points, double cond) {
+    identification_report rep;
+    rep.points = points;
+    rep.condition_number = cond;
+    rep.a.resize(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) rep.a[k] = a[k] ? *a[k] : 0.0;
+    for (std::size_t j = 0; j < unknown.size(); ++j) rep.a[unknown[j]] = x(Eigen::Index(j));
+    for (unsigned i = 0; i <= degree; ++i) rep.f.push_back(x(Eigen::Index(unknown.size() + i)));
+    rep.residual = integrated_residual(s, rep.a, rep.f);
+    rep.warning = warnings(s, cond);
+    return rep;
+}
+
 }  // namespace detail
 
 using namespace detail;
@@ -402,16 +416,7 @@ identification_report identify_sindy(const measured_system& s, const linear_part
             }
         if (!changed) break;
     }
-    identification_report rep;
-    rep.points = std::size_t(rows);
-    rep.condition_number = cond;
-    rep.a.resize(m);
-    for (std::size_t k = 0; k < m; ++k) rep.a[k] = a[k] ? *a[k] : 0.0;
-    for (std::size_t j = 0; j < unknown.size(); ++j) rep.a[unknown[j]] = x(Eigen::Index(j));
-    for (unsigned i = 0; i <= degree; ++i) rep.f.push_back(x(Eigen::Index(unknown.size() + i)));
-    rep.residual = integrated_residual(s, rep.a, rep.f);
-    rep.warning = warnings(s, cond);
-    return rep;
+    return report_of(s, a, unknown, degree, x, std::size_t(rows), cond);
 }
 
 }  // namespace symrep::identification

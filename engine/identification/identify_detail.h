@@ -29,5 +29,9 @@ struct lsq {
 lsq least_squares(Eigen::MatrixXd A, const Eigen::VectorXd& b);
 /// The warnings of a report (few blocks, data not from rest, a condition number above 1e8), "; "-joined.
 std::string warnings(const measured_system& s, double cond);
+/// The report of a solved system: x holds the unknown a_j (in `unknown`'s order), then the
+/// degree + 1 coefficients of f; the known a_k from `a`; residual and warnings of s.
+identification_report report_of(const measured_system& s, const linear_part& a, const std::vector<std::size_t>& unknown,
+                                unsigned degree, const Eigen::VectorXd& x, std::size_t points, double cond);
 
 }  // namespace symrep::identification::detail

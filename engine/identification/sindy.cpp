@@ -249,17 +249,9 @@ identification_report identify_sindy_cv(const measured_system& s, const linear_p
     const regression full = build(s, a, degree, best_w, unknown);
     double cond = 0;
     const Eigen::VectorXd x = stlsq(full.A, full.b, best_lambda, &cond);
-    identification_report rep;
-    rep.points = N;
-    rep.condition_number = cond;
+    identification_report rep = report_of(s, a, unknown, degree, x, N, cond);
     rep.window = 2 * std::size_t(best_w) + 1;
     rep.threshold = best_lambda;
-    rep.a.resize(m);
-    for (std::size_t k = 0; k < m; ++k) rep.a[k] = a[k] ? *a[k] : 0.0;
-    for (std::size_t j = 0; j < unknown.size(); ++j) rep.a[unknown[j]] = x(Eigen::Index(j));
-    for (unsigned i = 0; i <= degree; ++i) rep.f.push_back(x(Eigen::Index(unknown.size() + i)));
-    rep.residual = integrated_residual(s, rep.a, rep.f);
-    rep.warning = warnings(s, cond);
     return rep;
 }
 
