@@ -28,28 +28,16 @@ inline std::vector<outcome> compiled_family(unsigned seed, int n) {
     std::vector<outcome> out;
     runner R;
     R.run("vector w, g, r0, v0\npositive w0");
-    std::uniform_real_distribution<double> e_data(-250, 250), e_w(-300, 0.5), unit(0.3, 3), times(0.5, 10);
     std::string solved_for;
     const GiNaC::ex t = R.s.symbol("t");
     lang::builtin b;
     b.name = "compile";
     for (int i = 0; i < n; ++i) {
         const constant_w_case c = draw_constant_w(gen);
-        const double S = std::pow(10.0, std::floor(e_data(gen)));
-        const int wkind = std::uniform_int_distribution<int>(0, 9)(gen);
-        const double wn = wkind == 0 ? 0.0 : std::pow(10.0, e_w(gen));
-        vec3 w = draw_direction(gen);
-        const double wl = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-        for (double& x : w) x *= wn / wl;
-        const vec3 g0 = draw_direction(gen), r00 = draw_direction(gen), v00 = draw_direction(gen);
-        const double w0 = unit(gen), T = times(gen);
-        const bool exact_numbers = std::uniform_int_distribution<int>(0, 3)(gen) == 0;
-        vec3 g, r0, v0;
-        for (int k = 0; k < 3; ++k) g[k] = g0[k] * S, r0[k] = r00[k] * S, v0[k] = v00[k] * S;
-        const std::string values = "[w = " + vector_text(w, exact_numbers) + ", g = " + vector_text(g, exact_numbers) +
-                                   ", r0 = " + vector_text(r0, exact_numbers) + ", v0 = " +
-                                   vector_text(v0, exact_numbers) +
-                                   (c.foucault ? ", w0 = " + (exact_numbers ? exact(w0) : decimal(w0)) : "") + "]";
+        const constant_w_data data = draw_constant_w_data(gen);
+        const double S = data.S, w0 = data.w0, T = data.T;
+        const vec3 &w = data.w, &g0 = data.g0, &r00 = data.r00, &v00 = data.v00;
+        const std::string values = data.values(c.foucault);
         const std::vector<double> at{T / 1000, T / 7, T / 2, T};
         std::vector<std::vector<double>> refs;
         outcome st, many, plain;

@@ -266,6 +266,41 @@ inline std::vector<double> constant_w_reference(const constant_w_case& c, const 
     return {y[0], y[1], y[2]};
 }
 
+/// The data of one constant-w case, drawn alike by the constant-w and the compiled families:
+/// g, r0, v0 of scale S = 10^e (e in [-250, 250]; the unit-scale g0, r00, v00 for the
+/// reference), |w| = 10^e (e in [-300, 0.5]) or exactly 0 (one case in ten), w0 in [0.3, 3],
+/// T in [0.5, 10], and one case in four written with the exact rationals of the doubles.
+struct constant_w_data {
+    double S = 1, w0 = 1, T = 1;
+    vec3 w{}, g0{}, r00{}, v00{}, g{}, r0{}, v0{};
+    bool exact_numbers = false;
+    /// [w = ..., g = ..., r0 = ..., v0 = ...(, w0 = ...)] as symrep reads them
+    std::string values(bool with_w0) const {
+        return "[w = " + vector_text(w, exact_numbers) + ", g = " + vector_text(g, exact_numbers) +
+               ", r0 = " + vector_text(r0, exact_numbers) + ", v0 = " + vector_text(v0, exact_numbers) +
+               (with_w0 ? ", w0 = " + (exact_numbers ? exact(w0) : decimal(w0)) : std::string()) + "]";
+    }
+};
+
+inline constant_w_data draw_constant_w_data(std::mt19937& gen) {
+    std::uniform_real_distribution<double> e_data(-250, 250), e_w(-300, 0.5), unit(0.3, 3), times(0.5, 10);
+    constant_w_data d;
+    d.S = std::pow(10.0, std::floor(e_data(gen)));
+    const int wkind = std::uniform_int_distribution<int>(0, 9)(gen);
+    const double wn = wkind == 0 ? 0.0 : std::pow(10.0, e_w(gen));
+    d.w = draw_direction(gen);
+    const double wl = std::sqrt(d.w[0] * d.w[0] + d.w[1] * d.w[1] + d.w[2] * d.w[2]);
+    for (double& x : d.w) x *= wn / wl;
+    d.g0 = draw_direction(gen);
+    d.r00 = draw_direction(gen);
+    d.v00 = draw_direction(gen);
+    d.w0 = unit(gen);
+    d.T = times(gen);
+    d.exact_numbers = std::uniform_int_distribution<int>(0, 3)(gen) == 0;
+    for (int k = 0; k < 3; ++k) d.g[k] = d.g0[k] * d.S, d.r0[k] = d.r00[k] * d.S, d.v0[k] = d.v00[k] * d.S;
+    return d;
+}
+
 /// Runs `n` cases of the family with the generator seeded by `seed`: eval of solve(P) at the
 /// values, and on every fourth case solve(P, values) as well. Tolerance 1e-9 relative to the
 /// norm of r(T) or of the data's scale (the reference is good to ~1e-11; a wrong closed form
@@ -275,28 +310,17 @@ inline std::vector<outcome> constant_w_family(unsigned seed, int n, bool scenes 
     std::vector<outcome> out;
     runner R;
     R.run("vector w, g, r0, v0\npositive w0");
-    std::uniform_real_distribution<double> e_data(-250, 250), e_w(-300, 0.5), unit(0.3, 3), times(0.5, 10);
     std::string solved_for;  // the problem whose general solution is "s"
     for (int i = 0; i < n; ++i) {
         const constant_w_case c = draw_constant_w(gen);
         outcome o;
         o.family = "constant w";
         o.tolerance = 1e-9;
-        const double S = std::pow(10.0, std::floor(e_data(gen)));
-        const int wkind = std::uniform_int_distribution<int>(0, 9)(gen);
-        const double wn = wkind == 0 ? 0.0 : std::pow(10.0, e_w(gen));
-        vec3 w = draw_direction(gen);
-        const double wl = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-        for (double& x : w) x *= wn / wl;
-        const vec3 g0 = draw_direction(gen), r00 = draw_direction(gen), v00 = draw_direction(gen);
-        const double w0 = unit(gen), T = times(gen);
-        const bool exact_numbers = std::uniform_int_distribution<int>(0, 3)(gen) == 0;
-        vec3 g, r0, v0;
-        for (int k = 0; k < 3; ++k) g[k] = g0[k] * S, r0[k] = r00[k] * S, v0[k] = v00[k] * S;
-        const std::string values = "[w = " + vector_text(w, exact_numbers) + ", g = " + vector_text(g, exact_numbers) +
-                                   ", r0 = " + vector_text(r0, exact_numbers) + ", v0 = " +
-                                   vector_text(v0, exact_numbers) + ", w0 = " +
-                                   (exact_numbers ? exact(w0) : decimal(w0)) + "]";
+        const constant_w_data d = draw_constant_w_data(gen);
+        const double S = d.S, w0 = d.w0, T = d.T;
+        const vec3 &w = d.w, &g0 = d.g0, &r00 = d.r00, &v00 = d.v00;
+        const bool exact_numbers = d.exact_numbers;
+        const std::string values = d.values(true);
         std::vector<double> ref = constant_w_reference(c, w, w0, g0, r00, v00, T);
         for (double& x : ref) x *= S;
         // the floor of the norm: the size of the data (the reference's error is ~1e-11 of it)
