@@ -444,6 +444,12 @@ TEST(EvalBuiltin, SingularitiesWithoutALimitAreNamed) {
     EXPECT_NE(pole.find("pole"), std::string::npos) << pole;
     EXPECT_NE(pole.find("solve(P, values)"), std::string::npos) << pole;
     EXPECT_EQ(pole.find("power::eval"), std::string::npos) << pole;
+    // the same number on every line through the point, and no limit (1/2 on y = x^2,
+    // 3/2 for the second): printed 0.0 and 1.0 before, now refused
+    for (const char* e : {"eval(x^2*y/(x^4 + y^2), [x = 0, y = 0])", "eval((x^2*y + x^4 + y^2)/(x^4 + y^2), [x = 0, y = 0])"}) {
+        const std::string curve = test::what_of([&] { eval_script(e); });
+        EXPECT_NE(curve.find("not a proof"), std::string::npos) << curve;
+    }
 }
 
 TEST(EvalBuiltin, IntermediateUnderflowIsBoundedNotAnError) {

@@ -438,7 +438,8 @@ void register_mechanics_builtins(registry& r) {
                     // a point value of an integral object is a quadrature's, not exact: with one,
                     // a residual not proved 0 stays undecided
                     if (z.is_zero == truth::no && !num::has_integral(x)) some_no = true;
-                    if (z.is_zero != truth::no && undecided.empty()) undecided = what + " " + shown(x);
+                    if ((z.is_zero != truth::no || num::has_integral(x)) && undecided.empty())
+                        undecided = what + " " + shown(x);
                 }
                 if (!some_no && !undecided.empty())
                     throw domain_error(b.name + ": cannot decide whether " + undecided +
@@ -476,8 +477,9 @@ void register_mechanics_builtins(registry& r) {
         "several times). Where the values make the closed form divide by zero (w = [0, 0, 0] in sin(|w| t)/|w|, "
         "a double root c^2 = 4 k, a resonance w0 = 2, also given as the float 2.0), the exact limit is taken "
         "as the values approach those given (along lines through the point from both sides, accepted where "
-        "all agree; docs/numeric.md); where it is not established (a pole, a limit that depends on the "
-        "direction) eval names the denominator that vanishes and why, and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
+        "all agree and, with several values moving, proved through the one quantity that vanishes; "
+        "docs/numeric.md); where it is not established (a pole, a limit that depends on the "
+        "direction or on the curve of approach) eval names the denominator that vanishes and why, and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
         "result is evaluated with as many digits as its proved error bound needs to be correct to double precision "
         "(no loss where the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12 or 1e-300, or at long "
         "phases; where 2560 digits do not suffice, an error says so). Integral objects "

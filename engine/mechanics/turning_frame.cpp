@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "mechanics/quasi_polynomial.h"
+#include "scalar/floats.h"
 #include "vector/vector.h"
 
 namespace symrep::mechanics {
@@ -133,11 +134,87 @@ std::optional<ex> potential_of(const ex& f, const ex& p) {
 
 }  // namespace
 
+namespace {
+
+/// A literal of floats [f1(t), f2(t), f3(t)] whose components are one function of t
+/// times a constant vector to the working precision: as (s(t), u). b(t) [0.1, 0.2, 0.3]
+/// reaches here as [0.0666...67 t + 0.075, 0.1333...33 t + 0.15, ...]: the rate was
+/// multiplied into the floats, each product rounded to D digits (scalar/floats.h), so
+/// the components are proportional only up to the last digits. Each component is a
+/// sum of float coefficients times functions of t (a matrix A, rows the components,
+/// columns the functions); A has rank 1 when every 2x2 minor is below 10^(3-D) of its
+/// terms (the rounding of a few operations at D digits) and every exact zero is a
+/// zero of its whole row. Nothing otherwise.
+std::optional<std::pair<ex, ex>> float_direction(const ex& literal, const ex& t) {
+    std::vector<ex> functions;
+    std::vector<std::map<std::size_t, GiNaC::numeric>> rows(3);
+    for (unsigned k = 0; k < 3; ++k) {
+        const ex f = GiNaC::expand(literal.op(k));
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(f) ? f.nops() : 1); ++i) {
+            const ex term = GiNaC::is_a<GiNaC::add>(f) ? f.op(i) : f;
+            if (term.is_zero()) continue;
+            GiNaC::numeric c = 1;
+            ex rest = 1;
+            for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
+                const ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+                if (GiNaC::is_a<GiNaC::numeric>(x)) c *= GiNaC::ex_to<GiNaC::numeric>(x);
+                else rest *= x;
+            }
+            if (!c.is_real()) return std::nullopt;
+            std::size_t col = 0;
+            while (col < functions.size() && !functions[col].is_equal(rest)) ++col;
+            if (col == functions.size()) functions.push_back(rest);
+            rows[k][col] += c;
+        }
+    }
+    const GiNaC::numeric tol = GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(GiNaC::numeric(10), 3 - long(GiNaC::Digits)));
+    const auto at = [&](unsigned k, std::size_t j) {
+        const auto it = rows[k].find(j);
+        return it == rows[k].end() ? GiNaC::numeric(0) : it->second;
+    };
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned k = i + 1; k < 3; ++k)
+            for (std::size_t j = 0; j < functions.size(); ++j)
+                for (std::size_t l = j + 1; l < functions.size(); ++l) {
+                    const GiNaC::numeric p = at(i, j) * at(k, l), q = at(i, l) * at(k, j);
+                    if (abs(p - q) > tol * (abs(p) + abs(q))) return std::nullopt;
+                    // an exact zero against a nonzero product: not a rounding
+                    if ((p.is_zero() != q.is_zero())) return std::nullopt;
+                }
+    // u: the column of the largest norm; s(t) = sum_j (A_j . u)/(u . u) phi_j(t)
+    std::size_t best = 0;
+    GiNaC::numeric best_norm = -1;
+    for (std::size_t j = 0; j < functions.size(); ++j) {
+        GiNaC::numeric n = 0;
+        for (unsigned k = 0; k < 3; ++k) n += at(k, j) * at(k, j);
+        if (n > best_norm) {
+            best_norm = n;
+            best = j;
+        }
+    }
+    if (!best_norm.is_positive()) return std::nullopt;
+    ex s = 0;
+    for (std::size_t j = 0; j < functions.size(); ++j) {
+        GiNaC::numeric d = 0;
+        for (unsigned k = 0; k < 3; ++k) d += at(k, j) * at(k, best);
+        s += (d / best_norm) * functions[j];
+    }
+    if (!s.has(t)) return std::nullopt;  // constant: not this case
+    return std::make_pair(s, vector_literal(at(0, best), at(1, best), at(2, best)));
+}
+
+}  // namespace
+
 std::optional<std::pair<ex, ex>> fixed_direction(const ex& w, const ex& t) {
     std::vector<vector_term> wt = canonical_terms(w);
     if (wt.empty()) return std::nullopt;
     for (vector_term& term : wt)  // a literal [0, 0, f(t)]: f(t) [0, 0, 1]
-        if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
+        if (is_vector_literal(term.monomial) && term.monomial.has(t) && has_float(term.monomial)) {
+            if (const auto d = float_direction(term.monomial, t)) {
+                term.coefficient = GiNaC::normal(term.coefficient * d->first);
+                term.monomial = d->second;
+            }
+        } else if (is_vector_literal(term.monomial) && term.monomial.has(t)) {
             std::size_t k = 0;
             while (k < 3 && GiNaC::normal(term.monomial.op(k)).is_zero()) ++k;
             if (k == 3) continue;

@@ -19,11 +19,17 @@
 // test, scalar/equality.h); a limit that differs between them (|k|/k at 0,
 // x y/(x^2 + y^2) at 0), a pole, an expansion GiNaC cannot do (an essential
 // singularity, a root that is not a power series in mu) or an equality that
-// cannot be decided is refused with the reason. Agreement on half-lines is what
-// can be checked, not a proof for every curve of approach (x^2 y/(x^4 + y^2)
-// agrees on lines); for the solutions of linear problems with constant
-// coefficients, which are analytic in their parameters, the two coincide
-// (docs/numeric.md).
+// cannot be decided is refused with the reason.
+//
+// With one parameter moving that is a proof. With several, lines are not
+// (x^2 y/(x^4 + y^2) is 0 on every line through 0, 1/2 on y = x^2): the value of
+// the lines must then be proved through the one quantity Q that vanishes (the
+// singular bases, up to constant factors, or Q's one irreducible factor that
+// vanishes): with Q = q, the offsets symbolic and, where needed, one parameter
+// eliminated by Q(v) = q (implicit function theorem), the expression must be
+// regular away from q and have no negative power of mu (q = +-mu^2) identically
+// in the offsets; else refused ("not a proof"). docs/numeric.md, "Removable
+// singularities".
 #pragma once
 
 #include <functional>
