@@ -85,3 +85,19 @@ TEST(ResponseCubic, PrintedFormIndependentOfHistory) {
     EXPECT_EQ(printed(c), printed(a + "\n" + b + "\n" + c));
     EXPECT_EQ(printed(b), printed(c + "\n" + b));
 }
+
+// With parameters: the terms collected by their factors in t, each coefficient one reduced
+// fraction whose denominator leads positive by the names of its symbols (response.cpp,
+// parameter_form). Printed c*sin(2*t)/(c^3 - 4*c) - ... after one earlier response and
+// sin(2*t)/(c^2 - 4) - ... alone; the report quoted GiNaC's (k+m*w^2) or (m*w^2+k).
+TEST(ResponseCubic, ParameterFormsIndependentOfHistory) {
+    const std::string before[] = {"", "response([1, 3, 1], [2, 2], exp(-t) + t*exp(-2*t)/3, t)[1]",
+                                  "x := a*b*c*d*k*m*w*t", "response([1, c, 4], [1], exp(-t), t)[1]"};
+    for (const std::string call : {"response([1, 0, c^2], [1], sin(2*t), t)[1]", "response([m, c, k], [1], cos(w*t), t)[0]",
+                                   "response([m, c, k], [1], cos(w*t), t)[2]"}) {
+        const std::string alone = printed(call);
+        EXPECT_NE(alone.find("t"), std::string::npos) << alone;
+        for (const std::string& b : before) EXPECT_EQ(printed(b + "\n" + call), alone) << b;
+    }
+    EXPECT_EQ(printed("response([1, 0, c^2], [1], sin(2*t), t)[1]"), "sin(2*t)/(c^2 - 4) - 2*sin(c*t)/(c^3 - 4*c)");
+}

@@ -11,11 +11,9 @@ namespace symrep {
 using GiNaC::ex;
 
 namespace {
-std::string str(const ex& e) {
-    std::ostringstream os;
-    os << e;
-    return os.str();
-}
+// through the canonical printer (message_text): GiNaC's own output orders terms by its
+// history-dependent term order, (k+m*w^2) in one session and (m*w^2+k) in another
+std::string str(const ex& e) { return message_text(e, 100000); }
 
 /// Largest integer exponent in e (0 when none): checked before degree(), which
 /// reads exponents as machine integers.

@@ -1,6 +1,10 @@
 // symrep/signals/response.cpp -- see response.h.
 #include "signals/response.h"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "core/error.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
@@ -11,6 +15,68 @@
 namespace symrep::signals {
 
 using GiNaC::ex;
+
+namespace {
+
+/// The sign that makes p's leading coefficient positive, leading by the names of the symbols
+/// (the alphabetically first symbol, its highest power, then the next symbol in that
+/// coefficient, ...): a rule that does not depend on GiNaC's term order, which follows the
+/// session's history (symbol serial numbers) and addresses.
+int leading_sign_by_names(const GiNaC::ex& p0) {
+    GiNaC::ex p = GiNaC::expand(p0);
+    for (int guard = 0; guard < 64; ++guard) {
+        if (GiNaC::is_a<GiNaC::numeric>(p)) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(p);
+            return n.is_real() && n.is_negative() ? -1 : 1;
+        }
+        std::string first;
+        GiNaC::ex v;
+        for (auto it = p.preorder_begin(); it != p.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it)) {
+                const std::string n = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+                if (v.is_zero() || n < first) {
+                    first = n;
+                    v = *it;
+                }
+            }
+        if (v.is_zero() || !p.is_polynomial(v)) return 1;
+        p = GiNaC::expand(p.lcoeff(v));
+    }
+    return 1;
+}
+
+}  // namespace
+
+/// A response with parameters in one form whatever the session's history: the terms
+/// collected by their factors in t (sin(2 t), sin(c t), e^(-t), t^k), each coefficient one
+/// reduced fraction (normal) with expanded numerator and denominator, the denominator's
+/// leading coefficient by names positive.
+GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
+    const GiNaC::ex e = GiNaC::expand(x);
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_part;  // (part in t, coefficient)
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+        const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+        GiNaC::ex part = 1, coefficient = 1;
+        for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
+            const GiNaC::ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+            (f.has(t) ? part : coefficient) *= f;
+        }
+        auto it = std::find_if(by_part.begin(), by_part.end(), [&](const auto& q) { return q.first.is_equal(part); });
+        if (it == by_part.end()) by_part.emplace_back(part, coefficient);
+        else it->second += coefficient;
+    }
+    GiNaC::ex out = 0;
+    for (const auto& [part, coefficient] : by_part) {
+        const GiNaC::ex nd = GiNaC::normal(coefficient).numer_denom();
+        GiNaC::ex num = GiNaC::expand(nd.op(0)), den = GiNaC::expand(nd.op(1));
+        if (leading_sign_by_names(den) < 0) {
+            num = -num;
+            den = -den;
+        }
+        out += num / den * part;
+    }
+    return out;
+}
 
 namespace {
 
@@ -249,7 +315,7 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
     // (numeric coefficients: radicals of rationals; with parameters the forms stay as derived)
     const auto canonical_form = [&](const ex& x) {
         for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t)) return x;
+            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t)) return parameter_form(x, t);
         return GiNaC::expand(simplified_square_roots(x, t, true));
     };
     if (!discrete) {
