@@ -435,6 +435,36 @@ TEST(RelativeMotion, ClohessyWiltshireIsTheFirstOrderLimitForACircularTarget) {
 // (1e-9 relative: odeint at 1e-13 over one orbit); for a target with e ~ 0.3 it is the first-order
 // limit of the exact motion (relative error ~ d/R, tenfold for a tenfold separation), where
 // Clohessy-Wiltshire with the mean motion stays O(1) wrong at every separation.
+// Chasers 1e-9 and 1e-11 |R| from the target: the exact model differences two Kepler orbits,
+// which in doubles keeps only eps |R|/|rho| of rho (1e-5 at 1e-11 |R|; the differential harness
+// saw 3e-7 at 1e-7 |R|, seed 19); both orbits at 50 digits and their difference rounded once
+// keep rho to ~1e-15. The linear model differs from the exact one by O(|rho|/|R|) (the next
+// test's slope): the differences must fall 100-fold from one separation to the other
+// (measured 2.28e-8 and 2.285e-10 for the position at 1.9 periods) and stay below 1e-9 at the
+// closer one. The double path fails both.
+TEST(RelativeMotion, CloseSeparationsKeepTheirDigits) {
+    const Vector3d R0(7000.0, 0.0, 0.0), V0(0.0, 8.5, 1.2);  // e ~ 0.3
+    const double a = 1 / (2 / R0.norm() - V0.squaredNorm() / mu), T = 2 * std::numbers::pi * std::sqrt(a * a * a / mu);
+    for (double t : {0.37 * T, 1.9 * T}) {
+        double previous[2] = {0, 0};
+        for (double d : {7e-6, 7e-8}) {  // km
+            const relative_state s{d * Vector3d(0.3, -0.8, 0.5).normalized(), 1e-4 * d * Vector3d(0.2, 0.1, -0.3)};
+            const relative_state exact = relative_motion_exact(mu, R0, V0, s, t);
+            const relative_state th = tschauner_hempel(mu, R0, V0, s, {t})[0];
+            const double rel[2] = {(th.position - exact.position).norm() / exact.position.norm(),
+                                   (th.velocity - exact.velocity).norm() / exact.velocity.norm()};
+            for (int k = 0; k < 2; ++k) {
+                if (previous[k] > 0) {
+                    EXPECT_GT(previous[k] / rel[k], 50.0) << t << " " << k;
+                    EXPECT_LT(previous[k] / rel[k], 200.0) << t << " " << k;
+                    EXPECT_LT(rel[k], 1e-9) << t << " " << k;
+                }
+                previous[k] = rel[k];
+            }
+        }
+    }
+}
+
 TEST(RelativeMotion, TschaunerHempelIsTheFirstOrderLimitForAnEccentricTarget) {
     {
         const double r = 7000.0, n = std::sqrt(mu / (r * r * r));

@@ -5,10 +5,12 @@
 #include <cmath>
 
 #include <Eigen/LU>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "core/error.h"
 #include "numeric/integrate.h"
 #include "numeric/kepler.h"
+#include "numeric/kepler_universal.h"
 
 namespace symrep::mechanics {
 
@@ -28,20 +30,50 @@ Eigen::Vector3d lvlh_rate(const Eigen::Vector3d& R, const Eigen::Vector3d& V) {
     return R.cross(V) / R.squaredNorm();
 }
 
+namespace {
+
+using wide = boost::multiprecision::cpp_bin_float_50;
+
+num::triple_of<wide> widened(const Eigen::Vector3d& a) { return {wide(a.x()), wide(a.y()), wide(a.z())}; }
+
+/// a - b of two wide triples, rounded once to double.
+Eigen::Vector3d difference(const num::triple_of<wide>& a, const num::triple_of<wide>& b) {
+    return {static_cast<double>(a[0] - b[0]), static_cast<double>(a[1] - b[1]), static_cast<double>(a[2] - b[2])};
+}
+
+Eigen::Vector3d narrowed(const num::triple_of<wide>& a) {
+    return {static_cast<double>(a[0]), static_cast<double>(a[1]), static_cast<double>(a[2])};
+}
+
+}  // namespace
+
 relative_state relative_motion_exact(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
                                      const relative_state& start, double t) {
+    if (!(mu > 0) || !std::isfinite(mu)) throw domain_error("kepler: mu must be a positive number");
+    if (!R0.allFinite() || !V0.allFinite() || !start.position.allFinite() || !start.velocity.allFinite() ||
+        !std::isfinite(t))
+        throw domain_error("kepler: the initial state and the time must be finite");
     // the chaser in inertial components: d/dt (C rho) = C rho' + w x (C rho)
     const Eigen::Matrix3d C0 = lvlh_axes(R0, V0).transpose();
     const Eigen::Vector3d d0 = C0 * start.position;
-    const Eigen::Vector3d rc0 = R0 + d0;
-    const Eigen::Vector3d vc0 = V0 + C0 * start.velocity + lvlh_rate(R0, V0).cross(d0);
-    // both orbits in closed form (the inertial problems of Thm VI.3.2.1), then the frame at t
-    const num::kepler_state target = num::kepler_propagate(mu, R0, V0, t);
-    const num::kepler_state chaser = num::kepler_propagate(mu, rc0, vc0, t);
-    const Eigen::Matrix3d Ct = lvlh_axes(target.position, target.velocity);
-    const Eigen::Vector3d d = chaser.position - target.position;
-    const Eigen::Vector3d w = lvlh_rate(target.position, target.velocity);
-    return {Ct * d, Ct * (chaser.velocity - target.velocity - w.cross(d))};
+    const Eigen::Vector3d dv0 = C0 * start.velocity + lvlh_rate(R0, V0).cross(d0);
+    // both orbits in closed form (the inertial problems of Thm VI.3.2.1) at 50 digits, then
+    // their difference rounded once: in doubles, R0 + d0 and r_c - R lose the digits of
+    // |R|/|rho| (1e7 at a separation of 1e-7 |R|; the differential harness saw 3e-7 there)
+    const num::triple_of<wide> R0w = widened(R0), V0w = widened(V0), d0w = widened(d0), dv0w = widened(dv0);
+    num::triple_of<wide> rc0, vc0;
+    for (int i = 0; i < 3; ++i) rc0[i] = R0w[i] + d0w[i], vc0[i] = V0w[i] + dv0w[i];
+    const wide muw(mu), tw(t);
+    const num::kepler_state_of<wide> target = num::kepler_propagate_of<wide>(muw, R0w, V0w, tw);
+    const num::kepler_state_of<wide> chaser = num::kepler_propagate_of<wide>(muw, rc0, vc0, tw);
+    const Eigen::Vector3d R = narrowed(target.position), V = narrowed(target.velocity);
+    if (!R.allFinite() || !V.allFinite())
+        throw domain_error("kepler: the orbit reaches the centre of the field before t (a radial fall) or Kepler's "
+                           "equation did not converge");
+    const Eigen::Matrix3d Ct = lvlh_axes(R, V);
+    const Eigen::Vector3d d = difference(chaser.position, target.position);
+    const Eigen::Vector3d w = lvlh_rate(R, V);
+    return {Ct * d, Ct * (difference(chaser.velocity, target.velocity) - w.cross(d))};
 }
 
 relative_state clohessy_wiltshire(double n, const relative_state& s, double t) {
