@@ -269,16 +269,18 @@ TEST(MulticomplexSignals, FilterCasesCAndD) {
     const coeffs d = carrier_element(*A, {3, 1});
     // c: x'' + 10 x = cos 3t cos t: |H(4i)| = |H(2i)| = 1/6, the response stays amplitude-modulated
     const auto c = signals::respond_over(A, d, {1, 0, 10}, {1}, GiNaC::cos(3 * t) * GiNaC::cos(t), t);
-    EXPECT_EQ(c.kind, "not distorted") << c.report;
+    EXPECT_EQ(c.kind, response_kind::not_distorted) << c.report;
     EXPECT_TRUE(same_function(c.particular, GiNaC::sin(3 * t) * GiNaC::sin(t) / 6));
     // d: x'' + 12 x = cos 4t + 2 cos 2t (not amplitude-modulated): H = -1/4, 1/8 evens the moduli out
     const auto e = signals::respond_over(A, d, {1, 0, 12}, {1}, GiNaC::cos(4 * t) + 2 * GiNaC::cos(2 * t), t);
-    EXPECT_EQ(e.kind, "corrected") << e.report;
+    EXPECT_EQ(e.kind, response_kind::corrected) << e.report;
     EXPECT_EQ(amplitude_modulated(*A, e.element).holds, truth::yes);
     // distorted: x' + x = cos 3t cos t (|H| differs at 4 and 2)
-    EXPECT_EQ(signals::respond_over(A, d, {1, 1}, {1}, GiNaC::cos(3 * t) * GiNaC::cos(t), t).kind, "distorted");
+    EXPECT_EQ(signals::respond_over(A, d, {1, 1}, {1}, GiNaC::cos(3 * t) * GiNaC::cos(t), t).kind,
+              response_kind::distorted);
     // a notch at 4 (q = D^2 + 16): cos 4t filtered out; cos 4t + cos 2t loses one mode (b)
-    EXPECT_EQ(signals::respond_over(A, d, {1, 0, 0, 1}, {1, 0, 16}, GiNaC::cos(4 * t), t).kind, "filtered out");
+    EXPECT_EQ(signals::respond_over(A, d, {1, 0, 0, 1}, {1, 0, 16}, GiNaC::cos(4 * t), t).kind,
+              response_kind::filtered_out);
     const auto b = signals::respond_over(A, d, {1, 0, 0, 1}, {1, 0, 16}, GiNaC::cos(4 * t) + GiNaC::cos(2 * t), t);
     EXPECT_NE(b.report.find("case b"), std::string::npos) << b.report;
     // e: p(d) a zero divisor

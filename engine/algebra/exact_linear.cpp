@@ -1,4 +1,4 @@
-// symrep/algebra/exact_linear.cpp -- incremental exact Gaussian elimination.
+// symrep/algebra/exact_linear.cpp -- exact Gaussian elimination (see exact_linear.h).
 #include "algebra/exact_linear.h"
 
 #include <stdexcept>
@@ -68,6 +68,25 @@ std::optional<std::vector<ex>> solve_linear(std::vector<std::vector<ex>> A, std:
     std::vector<ex> x(cols);
     for (std::size_t c = 0; c < cols; ++c) x[c] = tidy(b[pivot_row[c]] / A[pivot_row[c]][c]);
     return x;
+}
+
+bool solve_any(const GiNaC::matrix& M, const std::vector<ex>& y, coeffs& x) {
+    const unsigned n = M.cols();
+    GiNaC::matrix vars(n, 1), rhs(M.rows(), 1);
+    std::vector<GiNaC::symbol> unknowns(n);
+    for (unsigned j = 0; j < n; ++j) vars(j, 0) = unknowns[j];
+    for (unsigned i = 0; i < M.rows(); ++i) rhs(i, 0) = y[i];
+    GiNaC::matrix s;
+    try {
+        s = M.solve(vars, rhs, GiNaC::solve_algo::gauss);
+    } catch (const std::runtime_error&) {
+        return false;  // "inconsistent linear system"
+    }
+    GiNaC::exmap free;
+    for (unsigned j = 0; j < n; ++j) free[unknowns[j]] = 0;
+    x.assign(n, ex(0));
+    for (unsigned j = 0; j < n; ++j) x[j] = tidy(s(j, 0).subs(free));
+    return true;
 }
 
 std::vector<coeffs> null_space(std::vector<std::vector<ex>> A) {

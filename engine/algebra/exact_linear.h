@@ -14,6 +14,11 @@
 //  - solve_linear: A x = b for a (possibly overdetermined) system, with the
 //    right-hand side allowed to hold arbitrary expressions (functions of t);
 //    returns nullopt when the system is inconsistent or A is rank deficient.
+//  - solve_any: M x = y where M may be rank deficient (a zero divisor's
+//    multiplication matrix): any solution, the free unknowns 0, by GiNaC's
+//    Gaussian elimination. Not solve_linear with a flag: its pivots are GiNaC's
+//    (a pivot is any entry that normalizes to non-zero, not one proved non-zero),
+//    and the forms of the responses of signals/response.cpp are those pivots'.
 #pragma once
 
 #include <cstddef>
@@ -51,6 +56,10 @@ private:
 /// has rank < cols or the system is inconsistent.
 std::optional<std::vector<GiNaC::ex>> solve_linear(std::vector<std::vector<GiNaC::ex>> A,
                                                    std::vector<GiNaC::ex> b);
+
+/// A solution of M x = y (M rows x cols, rows >= cols, possibly rank deficient), the free
+/// unknowns set to 0, each entry tidied; false when the system is inconsistent.
+bool solve_any(const GiNaC::matrix& M, const std::vector<GiNaC::ex>& y, coeffs& x);
 
 /// A basis of the null space {x : A x = 0} of A (rows x cols), exact
 /// (reduced row echelon form; free variables set to 1 in turn).

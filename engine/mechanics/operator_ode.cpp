@@ -17,7 +17,9 @@ namespace {
 std::string str(const ex& e) { return message_text(e); }
 
 // sqrt of a polynomial, exact on its square factors: sqrt(4 (w0 - W)^2) = 2 (w0 - W)
-// (up to a sign, which does not matter for a root pair).
+// (up to a sign, which does not matter for a root pair). Not scalar's sign_free_sqrt: the sign of
+// a square factor here is the one factor() gives (sign_free_sqrt chooses it at a generic point),
+// and it decides which of the two roots of the quadratic over C below comes first.
 ex sqrt_poly(const ex& e) {
     // GiNaC's factor() keeps the integer content: sqrt(4 a + 4 b) = 2 sqrt(a + b)
     const ex ee = GiNaC::expand(e);
@@ -52,51 +54,6 @@ ex sqrt_poly(const ex& e) {
 ex exact_sqrt(const ex& e) {
     const ex n = GiNaC::normal(e);
     return tidy(sqrt_poly(GiNaC::numer(n)) / sqrt_poly(GiNaC::denom(n)));
-}
-
-bool has_symbols(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
-    return false;
-}
-
-// +1, -1, 0, or 2 when undecidable; generic reading as in algebra/functions.cpp.
-int sign_of(const ex& x) {
-    const ex e = tidy(x);
-    if (e.is_zero()) return 0;
-    if (e.info(GiNaC::info_flags::positive)) return 1;
-    if (e.info(GiNaC::info_flags::negative)) return -1;
-    if (!has_symbols(e)) {
-        const ex v = GiNaC::evalf(e);
-        if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
-            if (GiNaC::ex_to<GiNaC::numeric>(v).is_positive()) return 1;
-            if (GiNaC::ex_to<GiNaC::numeric>(v).is_negative()) return -1;
-        }
-        return 2;
-    }
-    if (e.info(GiNaC::info_flags::nonnegative)) return 1;
-    if ((-e).info(GiNaC::info_flags::nonnegative)) return -1;
-    return 2;
-}
-
-bool has_radical(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
-            !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer())
-            return true;
-    return false;
-}
-
-// Sign of a discriminant: as sign_of, and a (minus a) perfect square of a
-// non-zero expression such as -4 (w0 - W)^2 is read as negative (generic reading).
-int discriminant_sign(const ex& disc) {
-    const int s = sign_of(disc);
-    if (s != 2) return s;
-    // a root free of radicals and of I: -disc (or disc) is a square of a real expression
-    const auto is_square = [](const ex& r) { return !has_radical(r) && !r.has(GiNaC::I); };
-    if (is_square(exact_sqrt(-disc))) return -1;
-    if (is_square(exact_sqrt(disc))) return 1;
-    return 2;
 }
 
 cex eval_poly(const std::vector<cex>& a, const cex& z) {
@@ -140,7 +97,8 @@ std::vector<characteristic_root> characteristic_roots(const std::vector<cex>& a,
     std::vector<cex> candidates;
     // a complex quadratic with a real discriminant of known sign: the quadratic
     // formula over C (s^2 + 2 i |w| s + w0^2 of VI.2.93 has the roots
-    // i(-|w| +- sqrt(|w|^2 + w0^2)), which p conj(p), irreducible of degree 4, hides)
+    // i(-|w| +- sqrt(|w|^2 + w0^2)), which p conj(p), irreducible of degree 4, hides; the
+    // formulas of scalar/polynomial_roots.h are those of real factors over Q(atoms))
     int quadratic_sign = 2;
     bool complex_quadratic = false;  // complex coefficients: the quadratic formula over C
     cex D, sq;

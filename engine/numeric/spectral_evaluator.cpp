@@ -130,6 +130,326 @@ double log10_of(const numeric& x) {
     return (double(e) * std::log(2.0) + std::log(std::fabs(mant))) / std::log(10.0);
 }
 
+using cluster = detail::spectral_cluster;
+using level = detail::spectral_level;
+using polynomials = std::vector<std::vector<numeric>>;  // [output][m]: the coefficients of t^m
+
+/// The exponents at `digits` digits, equal ones (within tiny) merged, with their polynomials.
+struct exponent_table {
+    std::vector<numeric> lambda;
+    std::vector<polynomials> poly;  // [exponent]
+};
+
+exponent_table merge_exponents(const std::vector<term>& terms, std::size_t n_out, long digits, const numeric& tiny) {
+    exponent_table x;
+    for (const term& k : terms) {
+        const numeric l = value_of(k.exponent, digits, "exponent");
+        const numeric c = value_of(k.coefficient, digits, "coefficient");
+        std::size_t j = 0;
+        while (j < x.lambda.size() && GiNaC::abs(x.lambda[j] - l) > tiny * std::max(numeric(1), GiNaC::abs(l))) ++j;
+        if (j == x.lambda.size()) {
+            x.lambda.push_back(l);
+            x.poly.emplace_back(n_out);
+        }
+        auto& p = x.poly[j][k.output];
+        if (p.size() <= k.m) p.resize(k.m + 1, numeric(0));
+        p[k.m] += c;
+    }
+    return x;
+}
+
+/// The outputs are real: the exponent j off the real axis has its conjugate, with the conjugate
+/// coefficients (to `loose`); domain_error naming it otherwise.
+void check_conjugate_partner(const exponent_table& x, std::size_t j, std::size_t n_out, const numeric& tiny,
+                             const numeric& loose) {
+    const numeric im = x.lambda[j].imag();
+    std::size_t q = 0;
+    const numeric conj_l = x.lambda[j].real() - GiNaC::I * im;
+    while (q < x.lambda.size() &&
+           GiNaC::abs(x.lambda[q] - conj_l) > tiny * std::max(numeric(1), GiNaC::abs(conj_l)))
+        ++q;
+    bool ok = q < x.lambda.size();
+    for (std::size_t i = 0; ok && i < n_out; ++i) {
+        const auto& a = x.poly[j][i];
+        const auto& b = x.poly[q][i];
+        for (std::size_t m = 0; m < std::max(a.size(), b.size()); ++m) {
+            const numeric u = m < a.size() ? a[m] : numeric(0), y = m < b.size() ? b[m] : numeric(0);
+            const numeric yc = y.real() - GiNaC::I * y.imag();
+            if (GiNaC::abs(u - yc) > loose * std::max(GiNaC::abs(u), GiNaC::abs(y))) ok = false;
+        }
+    }
+    if (!ok)
+        throw domain_error("spectral evaluator: an output is not real (the exponent " + bounded(x.lambda[j]) +
+                           " has no conjugate partner)");
+}
+
+/// Every exponent (all are clustered: a cluster near the real axis must hold both halves for
+/// its cancellation to happen in the moments), those on the real axis made real with real
+/// polynomials; a cluster in the lower half plane is the mirror image of one in the upper,
+/// which is evaluated twice over (Re 2 G) instead.
+struct spectrum {
+    std::vector<numeric> upper;
+    std::vector<polynomials> folded;
+    std::size_t n_out = 0, max_m = 0;  // outputs; the longest polynomial
+    numeric tiny;                      // exponents closer than this (relative) are equal
+};
+
+spectrum fold_real(const exponent_table& x, std::size_t n_out, const numeric& tiny, const numeric& loose) {
+    spectrum s;
+    s.n_out = n_out;
+    s.tiny = tiny;
+    for (std::size_t j = 0; j < x.lambda.size(); ++j) {
+        const numeric im = x.lambda[j].imag();
+        const bool real_axis = GiNaC::abs(im) <= tiny * std::max(numeric(1), GiNaC::abs(x.lambda[j]));
+        if (!real_axis) check_conjugate_partner(x, j, n_out, tiny, loose);
+        s.upper.push_back(real_axis ? x.lambda[j].real() : x.lambda[j]);
+        s.folded.push_back(x.poly[j]);
+        for (std::size_t i = 0; i < n_out; ++i) {
+            auto& p = s.folded.back()[i];
+            if (real_axis)
+                for (numeric& c : p) {
+                    if (GiNaC::abs(c.imag()) > loose * GiNaC::abs(c))
+                        throw domain_error("spectral evaluator: output " + std::to_string(i + 1) + " is not real");
+                    c = c.real();
+                }
+            s.max_m = std::max(s.max_m, p.size());
+        }
+    }
+    return s;
+}
+
+/// Which side of the real axis a centre lies on: -1, 0, 1.
+int side(const spectrum& s, const numeric& centre, double spread) {
+    const numeric im = centre.imag();
+    if (GiNaC::abs(im) <= s.tiny * std::max(numeric(1), GiNaC::abs(centre)) + numeric(spread) * s.tiny) return 0;
+    return im > 0 ? 1 : -1;
+}
+
+struct edge {
+    double length;
+    std::size_t a, b;
+};
+
+/// Union-find over 0 .. n-1 (path halving).
+struct disjoint_sets {
+    std::vector<std::size_t> parent;
+    explicit disjoint_sets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+    std::size_t find(std::size_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void join(std::size_t a, std::size_t b) {
+        const std::size_t root_b = find(b);
+        parent[find(a)] = root_b;
+    }
+};
+
+/// The minimum spanning tree of the exponents (Kruskal; there are few).
+std::vector<edge> spanning_tree(const std::vector<numeric>& upper) {
+    const std::size_t L = upper.size();
+    std::vector<edge> all;
+    for (std::size_t a = 0; a < L; ++a)
+        for (std::size_t b = a + 1; b < L; ++b) all.push_back({dbl(GiNaC::abs(upper[a] - upper[b])), a, b});
+    std::sort(all.begin(), all.end(), [](const edge& x, const edge& y) { return x.length < y.length; });
+    disjoint_sets sets(L);
+    std::vector<edge> tree;
+    for (const edge& e : all)
+        if (sets.find(e.a) != sets.find(e.b)) {
+            sets.join(e.a, e.b);
+            tree.push_back(e);
+        }
+    return tree;
+}
+
+/// The tree's distinct edge lengths, descending (level j + 1 starts at R / lengths[j]).
+std::vector<double> cut_lengths(const std::vector<edge>& tree) {
+    std::vector<double> lengths;
+    for (const edge& e : tree) lengths.push_back(e.length);
+    std::sort(lengths.rbegin(), lengths.rend());
+    lengths.erase(std::unique(lengths.begin(), lengths.end()), lengths.end());
+    return lengths;
+}
+
+/// The clusters at a cut: the exponents joined by the tree's edges shorter than `cut`, each
+/// group in index order, the groups in the order of their roots (some empty).
+std::vector<std::vector<std::size_t>> groups_below(const std::vector<edge>& tree, std::size_t L, double cut) {
+    disjoint_sets sets(L);
+    for (const edge& e : tree)
+        if (e.length < cut) sets.join(e.a, e.b);
+    std::vector<std::vector<std::size_t>> members(L);
+    for (std::size_t k = 0; k < L; ++k) members[sets.find(k)].push_back(k);
+    return members;
+}
+
+/// A single exponent k, evaluated directly by its polynomial (doubled for a pair off the real
+/// axis); false for one in the lower half plane (the mirror image of one in the upper).
+bool direct_cluster(const spectrum& s, std::size_t k, cluster& c) {
+    const int half = side(s, s.upper[k], 0);
+    if (half < 0) return false;
+    const double weight = half > 0 ? 2 : 1;
+    std::tie(c.re_hi, c.re_lo) = split(s.upper[k].real());
+    std::tie(c.im_hi, c.im_lo) = split(s.upper[k].imag());
+    c.series = false;
+    c.length = s.max_m;
+    c.coeff.assign(s.n_out * s.max_m, 0.0);
+    for (std::size_t i = 0; i < s.n_out; ++i)
+        for (std::size_t m = 0; m < s.folded[k][i].size(); ++m)
+            c.coeff[i * s.max_m + m] = {weight * dbl(s.folded[k][i][m].real()), weight * dbl(s.folded[k][i][m].imag())};
+    return true;
+}
+
+/// The moments mu[i][n] of a group about `at` (header), and their magnitudes without
+/// cancellation size[i][n] (the same sums of absolute values).
+struct moments {
+    std::vector<std::vector<numeric>> mu, size;
+};
+
+moments moments_about(const spectrum& s, const std::vector<std::size_t>& group, const numeric& at, std::size_t n_max) {
+    moments out{std::vector<std::vector<numeric>>(s.n_out, std::vector<numeric>(n_max + 1, numeric(0))),
+                std::vector<std::vector<numeric>>(s.n_out, std::vector<numeric>(n_max + 1, numeric(0)))};
+    for (std::size_t k : group) {
+        const numeric delta = s.upper[k] - at;
+        const numeric delta_abs = GiNaC::abs(delta);
+        std::vector<numeric> pw(n_max + 1), pa(n_max + 1);  // delta^j / j!, |delta|^j / j!
+        pw[0] = 1;
+        pa[0] = 1;
+        for (std::size_t q = 1; q <= n_max; ++q) {
+            pw[q] = pw[q - 1] * delta / numeric(static_cast<long>(q));
+            pa[q] = pa[q - 1] * delta_abs / numeric(static_cast<long>(q));
+        }
+        for (std::size_t i = 0; i < s.n_out; ++i)
+            for (std::size_t m = 0; m < s.folded[k][i].size(); ++m) {
+                const numeric& cm = s.folded[k][i][m];
+                if (cm.is_zero()) continue;
+                const numeric cabs = GiNaC::abs(cm);
+                for (std::size_t n = m; n <= n_max; ++n) {
+                    out.mu[i][n] += cm * pw[n - m];
+                    out.size[i][n] += cabs * pa[n - m];
+                }
+            }
+    }
+    return out;
+}
+
+/// log10 of every |mu[i][n]| and size[i][n] (-1e300 for 0).
+struct log_moments {
+    std::vector<std::vector<double>> mu, size;
+};
+
+log_moments logs_of(const moments& mo) {
+    log_moments out;
+    for (std::size_t i = 0; i < mo.mu.size(); ++i) {
+        out.mu.emplace_back(mo.mu[i].size());
+        out.size.emplace_back(mo.mu[i].size());
+        for (std::size_t n = 0; n < mo.mu[i].size(); ++n) {
+            out.mu[i][n] = log10_of(GiNaC::abs(mo.mu[i][n]));
+            out.size[i][n] = log10_of(mo.size[i][n]);
+        }
+    }
+    return out;
+}
+
+/// The digits the cancellation needs: noise 10^-digits size_n t^n against 2^-58 max_j |mu_j| t^j
+/// at both ends of the level, t_lo and t_hi.
+long digits_for_cancellation(const log_moments& lg, double t_lo, double t_hi) {
+    long needed = 0;
+    for (double tt : {t_lo, t_hi}) {
+        const double lt = std::log10(tt);
+        for (std::size_t i = 0; i < lg.mu.size(); ++i) {
+            double top = -1e300;
+            for (std::size_t n = 0; n < lg.mu[i].size(); ++n) top = std::max(top, lg.mu[i][n] + double(n) * lt);
+            if (top < -1e299) continue;
+            for (std::size_t n = 0; n < lg.mu[i].size(); ++n)
+                if (lg.size[i][n] > -1e299)
+                    needed = std::max(needed, long(std::ceil(lg.size[i][n] + double(n) * lt - top + 18)));
+        }
+    }
+    return needed;
+}
+
+/// The terms the series needs for |t| <= bound, bounds t_hi / 2^b down to the level's start:
+/// the smallest N with sum_{n >= N} |mu_n| tb^n <= 2^-60 max_n |mu_n| tb^n, for every output.
+void series_lengths(const log_moments& lg, double t_hi, double start, cluster& c) {
+    for (int b = 0; b < 64; ++b) {
+        const double tb = std::ldexp(t_hi, -b);
+        if (b > 0 && (tb < start || c.terms.back() <= 1)) break;
+        const double lt = std::log10(tb);
+        std::size_t need = 1;
+        for (std::size_t i = 0; i < lg.mu.size(); ++i) {
+            const std::vector<double>& log_mu = lg.mu[i];
+            double top = -1e300;
+            for (std::size_t n = 0; n < log_mu.size(); ++n) top = std::max(top, log_mu[n] + double(n) * lt);
+            if (top < -1e299) continue;
+            double tail = 0;
+            std::size_t N = log_mu.size();
+            while (N > 0) {
+                const double add = std::pow(10.0, log_mu[N - 1] + double(N - 1) * lt - top);
+                if (tail + add > std::ldexp(1.0, -60)) break;
+                tail += add;
+                --N;
+            }
+            need = std::max(need, N);
+        }
+        c.bound.push_back(tb);
+        c.terms.push_back(need);
+    }
+}
+
+/// A group of two or more exponents, evaluated as the Taylor series about its centre (header)
+/// on the level [start, end); false for a group in the lower half plane (the mirror image of one
+/// in the upper). Raises needed_digits to what its moments' cancellation needs.
+bool series_cluster(const spectrum& s, const std::vector<std::size_t>& group, double start, double end,
+                    long& needed_digits, cluster& c) {
+    // the centre, as the double-double it will be evaluated with
+    numeric centre = 0;
+    for (std::size_t k : group) centre += s.upper[k];
+    centre = centre / numeric(static_cast<long>(group.size()));
+    double spread = 0;
+    for (std::size_t k : group) spread = std::max(spread, dbl(GiNaC::abs(s.upper[k] - centre)));
+    const int half = side(s, centre, spread);
+    if (half < 0) return false;
+    if (half == 0) centre = centre.real();  // a cluster symmetric about the real axis
+    const double weight = half > 0 ? 2 : 1;
+    std::tie(c.re_hi, c.re_lo) = split(centre.real());
+    std::tie(c.im_hi, c.im_lo) = split(centre.imag());
+    const numeric at = exact(c.re_hi) + exact(c.re_lo) + GiNaC::I * (exact(c.im_hi) + exact(c.im_lo));
+    double rho = 0;
+    for (std::size_t k : group) rho = std::max(rho, dbl(GiNaC::abs(s.upper[k] - at)));
+    const double t_hi = end;
+    const std::size_t n_max = s.max_m + 40 + static_cast<std::size_t>(std::ceil(3 * rho * t_hi));
+    if (n_max > 600) throw domain_error("spectral evaluator: a cluster of exponents too wide for its series");
+    const moments mo = moments_about(s, group, at, n_max);
+    const log_moments lg = logs_of(mo);
+    const double t_lo = std::max(start, t_hi * std::ldexp(1.0, -30));  // (down to 2^-30 t_hi at the first level)
+    needed_digits = std::max(needed_digits, digits_for_cancellation(lg, t_lo, t_hi));
+    series_lengths(lg, t_hi, start, c);
+    c.series = true;
+    c.length = c.terms.front();
+    c.coeff.assign(s.n_out * c.length, 0.0);
+    for (std::size_t i = 0; i < s.n_out; ++i)
+        for (std::size_t n = 0; n < c.length; ++n)
+            c.coeff[i * c.length + n] = {weight * dbl(mo.mu[i][n].real()), weight * dbl(mo.mu[i][n].imag())};
+    return true;
+}
+
+/// Level j: from R / lengths[j - 1] (0 for j = 0) to R / lengths[j] (infinity for the last),
+/// the exponents joined by the tree's edges shorter than lengths[j - 1] (all for j = 0).
+level level_of(const spectrum& s, const std::vector<edge>& tree, const std::vector<double>& lengths, std::size_t j,
+               double R, long& needed_digits) {
+    level lv;
+    lv.start = j == 0 ? 0.0 : R / lengths[j - 1];
+    const double end = j < lengths.size() ? R / lengths[j] : INFINITY;
+    const double cut = j == 0 ? INFINITY : lengths[j - 1];
+    for (const auto& group : groups_below(tree, s.upper.size(), cut)) {
+        if (group.empty()) continue;
+        cluster c;
+        const bool kept = group.size() == 1 ? direct_cluster(s, group[0], c)
+                                            : series_cluster(s, group, lv.start, end, needed_digits, c);
+        if (kept) lv.clusters.push_back(std::move(c));
+    }
+    return lv;
+}
+
 }  // namespace
 
 spectral_function::spectral_function(const std::vector<ex>& outputs, const ex& t, const spectral_options& options)
@@ -142,236 +462,17 @@ spectral_function::spectral_function(const std::vector<ex>& outputs, const ex& t
 
     long digits = 60;
     for (int attempt = 0;; ++attempt) {
-        // exponents and coefficients with `digits` digits; equal exponents merged
-        std::vector<numeric> lambda;
-        std::vector<std::vector<std::vector<numeric>>> poly;  // [exponent][output][m]
+        // exponents and coefficients with `digits` digits
         const numeric tiny = GiNaC::pow(numeric(10), numeric(-(digits - 15)));
-        for (const term& k : terms) {
-            const numeric l = value_of(k.exponent, digits, "exponent");
-            const numeric c = value_of(k.coefficient, digits, "coefficient");
-            std::size_t j = 0;
-            while (j < lambda.size() && GiNaC::abs(lambda[j] - l) > tiny * std::max(numeric(1), GiNaC::abs(l))) ++j;
-            if (j == lambda.size()) {
-                lambda.push_back(l);
-                poly.emplace_back(n_out);
-            }
-            auto& p = poly[j][k.output];
-            if (p.size() <= k.m) p.resize(k.m + 1, numeric(0));
-            p[k.m] += c;
-        }
-        // The outputs are real: every exponent off the real axis has its conjugate, with the
-        // conjugate coefficients. All are clustered (a cluster near the real axis must hold both
-        // halves for its cancellation to happen in the moments); a cluster in the lower half plane
-        // is the mirror image of one in the upper, which is evaluated twice over (Re 2 G) instead.
         const numeric loose = GiNaC::pow(numeric(10), numeric(-(digits / 2)));
-        std::vector<numeric> upper;  // every exponent, those on the real axis made real
-        std::vector<std::vector<std::vector<numeric>>> folded;
-        std::size_t max_m = 0;
-        for (std::size_t j = 0; j < lambda.size(); ++j) {
-            const numeric im = lambda[j].imag();
-            const bool real_axis = GiNaC::abs(im) <= tiny * std::max(numeric(1), GiNaC::abs(lambda[j]));
-            if (!real_axis) {
-                std::size_t q = 0;
-                const numeric conj_l = lambda[j].real() - GiNaC::I * im;
-                while (q < lambda.size() &&
-                       GiNaC::abs(lambda[q] - conj_l) > tiny * std::max(numeric(1), GiNaC::abs(conj_l)))
-                    ++q;
-                bool ok = q < lambda.size();
-                for (std::size_t i = 0; ok && i < n_out; ++i) {
-                    const auto& a = poly[j][i];
-                    const auto& b = poly[q][i];
-                    for (std::size_t m = 0; m < std::max(a.size(), b.size()); ++m) {
-                        const numeric x = m < a.size() ? a[m] : numeric(0), y = m < b.size() ? b[m] : numeric(0);
-                        const numeric yc = y.real() - GiNaC::I * y.imag();
-                        if (GiNaC::abs(x - yc) > loose * std::max(GiNaC::abs(x), GiNaC::abs(y))) ok = false;
-                    }
-                }
-                if (!ok)
-                    throw domain_error("spectral evaluator: an output is not real (the exponent " +
-                                       bounded(lambda[j]) + " has no conjugate partner)");
-            }
-            upper.push_back(real_axis ? lambda[j].real() : lambda[j]);
-            folded.push_back(poly[j]);
-            for (std::size_t i = 0; i < n_out; ++i) {
-                auto& p = folded.back()[i];
-                if (real_axis)
-                    for (numeric& c : p) {
-                        if (GiNaC::abs(c.imag()) > loose * GiNaC::abs(c))
-                            throw domain_error("spectral evaluator: output " + std::to_string(i + 1) +
-                                               " is not real");
-                        c = c.real();
-                    }
-                max_m = std::max(max_m, p.size());
-            }
-        }
-        // which side of the real axis a centre lies on: -1, 0, 1
-        const auto side = [&](const numeric& centre, double spread) {
-            const numeric im = centre.imag();
-            if (GiNaC::abs(im) <= tiny * std::max(numeric(1), GiNaC::abs(centre)) + numeric(spread) * tiny) return 0;
-            return im > 0 ? 1 : -1;
-        };
-        const std::size_t L = upper.size();
-        n_exponents_ = L;
-
-        // minimum spanning tree of the exponents (Kruskal; L is small)
-        struct edge {
-            double length;
-            std::size_t a, b;
-        };
-        std::vector<edge> all;
-        for (std::size_t a = 0; a < L; ++a)
-            for (std::size_t b = a + 1; b < L; ++b) all.push_back({dbl(GiNaC::abs(upper[a] - upper[b])), a, b});
-        std::sort(all.begin(), all.end(), [](const edge& x, const edge& y) { return x.length < y.length; });
-        std::vector<std::size_t> parent(L);
-        const auto find = [&](std::size_t x) {
-            while (parent[x] != x) x = parent[x] = parent[parent[x]];
-            return x;
-        };
-        std::iota(parent.begin(), parent.end(), 0);
-        std::vector<edge> tree;
-        for (const edge& e : all)
-            if (find(e.a) != find(e.b)) {
-                parent[find(e.a)] = find(e.b);
-                tree.push_back(e);
-            }
-        std::vector<double> lengths;  // distinct, descending
-        for (const edge& e : tree) lengths.push_back(e.length);
-        std::sort(lengths.rbegin(), lengths.rend());
-        lengths.erase(std::unique(lengths.begin(), lengths.end()), lengths.end());
-
+        const spectrum s = fold_real(merge_exponents(terms, n_out, digits, tiny), n_out, tiny, loose);
+        n_exponents_ = s.upper.size();
+        const std::vector<edge> tree = spanning_tree(s.upper);
+        const std::vector<double> lengths = cut_lengths(tree);
         levels_.clear();
         long needed_digits = 0;
-        for (std::size_t j = 0; j <= lengths.size(); ++j) {
-            level lv;
-            lv.start = j == 0 ? 0.0 : R / lengths[j - 1];
-            const double end = j < lengths.size() ? R / lengths[j] : INFINITY;
-            // clusters: edges shorter than the level's cut are joined
-            std::iota(parent.begin(), parent.end(), 0);
-            const double cut = j == 0 ? INFINITY : lengths[j - 1];
-            for (const edge& e : tree)
-                if (e.length < cut) parent[find(e.a)] = find(e.b);
-            std::vector<std::vector<std::size_t>> members(L);
-            for (std::size_t k = 0; k < L; ++k) members[find(k)].push_back(k);
-            for (const auto& group : members) {
-                if (group.empty()) continue;
-                cluster c;
-                if (group.size() == 1) {
-                    const std::size_t k = group[0];
-                    const int half = side(upper[k], 0);
-                    if (half < 0) continue;  // the mirror image of an exponent in the upper half
-                    const double weight = half > 0 ? 2 : 1;
-                    std::tie(c.re_hi, c.re_lo) = split(upper[k].real());
-                    std::tie(c.im_hi, c.im_lo) = split(upper[k].imag());
-                    c.series = false;
-                    c.length = max_m;
-                    c.coeff.assign(n_out * max_m, 0.0);
-                    for (std::size_t i = 0; i < n_out; ++i)
-                        for (std::size_t m = 0; m < folded[k][i].size(); ++m)
-                            c.coeff[i * max_m + m] = {weight * dbl(folded[k][i][m].real()),
-                                                      weight * dbl(folded[k][i][m].imag())};
-                    lv.clusters.push_back(std::move(c));
-                    continue;
-                }
-                // the centre, as the double-double it will be evaluated with
-                numeric centre = 0;
-                for (std::size_t k : group) centre += upper[k];
-                centre = centre / numeric(static_cast<long>(group.size()));
-                double spread = 0;
-                for (std::size_t k : group) spread = std::max(spread, dbl(GiNaC::abs(upper[k] - centre)));
-                const int half = side(centre, spread);
-                if (half < 0) continue;  // the mirror image of a cluster in the upper half
-                if (half == 0) centre = centre.real();  // a cluster symmetric about the real axis
-                const double weight = half > 0 ? 2 : 1;
-                std::tie(c.re_hi, c.re_lo) = split(centre.real());
-                std::tie(c.im_hi, c.im_lo) = split(centre.imag());
-                const numeric at = exact(c.re_hi) + exact(c.re_lo) + GiNaC::I * (exact(c.im_hi) + exact(c.im_lo));
-                double rho = 0;
-                for (std::size_t k : group) rho = std::max(rho, dbl(GiNaC::abs(upper[k] - at)));
-                const double t_hi = end;
-                const std::size_t n_max =
-                    max_m + 40 + static_cast<std::size_t>(std::ceil(3 * rho * t_hi));
-                if (n_max > 600)
-                    throw domain_error("spectral evaluator: a cluster of exponents too wide for its series");
-                // moments mu[i][n] and their magnitudes without cancellation
-                std::vector<std::vector<numeric>> mu(n_out, std::vector<numeric>(n_max + 1, numeric(0)));
-                std::vector<std::vector<numeric>> size(n_out, std::vector<numeric>(n_max + 1, numeric(0)));
-                for (std::size_t k : group) {
-                    const numeric delta = upper[k] - at;
-                    const numeric delta_abs = GiNaC::abs(delta);
-                    std::vector<numeric> pw(n_max + 1), pa(n_max + 1);  // delta^j / j!, |delta|^j / j!
-                    pw[0] = 1;
-                    pa[0] = 1;
-                    for (std::size_t q = 1; q <= n_max; ++q) {
-                        pw[q] = pw[q - 1] * delta / numeric(static_cast<long>(q));
-                        pa[q] = pa[q - 1] * delta_abs / numeric(static_cast<long>(q));
-                    }
-                    for (std::size_t i = 0; i < n_out; ++i)
-                        for (std::size_t m = 0; m < folded[k][i].size(); ++m) {
-                            const numeric& cm = folded[k][i][m];
-                            if (cm.is_zero()) continue;
-                            const numeric cabs = GiNaC::abs(cm);
-                            for (std::size_t n = m; n <= n_max; ++n) {
-                                mu[i][n] += cm * pw[n - m];
-                                size[i][n] += cabs * pa[n - m];
-                            }
-                        }
-                }
-                // digits the cancellation needs: noise 10^-digits size_n t^n against 2^-58 max_j |mu_j| t^j
-                // at both ends of the level (down to 2^-30 t_hi at the first)
-                const double t_lo = std::max(lv.start, t_hi * std::ldexp(1.0, -30));
-                std::vector<std::vector<double>> log_mu(n_out, std::vector<double>(n_max + 1)),
-                    log_size(n_out, std::vector<double>(n_max + 1));
-                for (std::size_t i = 0; i < n_out; ++i)
-                    for (std::size_t n = 0; n <= n_max; ++n) {
-                        log_mu[i][n] = log10_of(GiNaC::abs(mu[i][n]));
-                        log_size[i][n] = log10_of(size[i][n]);
-                    }
-                for (double tt : {t_lo, t_hi}) {
-                    const double lt = std::log10(tt);
-                    for (std::size_t i = 0; i < n_out; ++i) {
-                        double top = -1e300;
-                        for (std::size_t n = 0; n <= n_max; ++n) top = std::max(top, log_mu[i][n] + double(n) * lt);
-                        if (top < -1e299) continue;
-                        for (std::size_t n = 0; n <= n_max; ++n)
-                            if (log_size[i][n] > -1e299)
-                                needed_digits = std::max(
-                                    needed_digits, long(std::ceil(log_size[i][n] + double(n) * lt - top + 18)));
-                    }
-                }
-                // terms needed for |t| <= bound, bounds t_hi / 2^b
-                for (int b = 0; b < 64; ++b) {
-                    const double tb = std::ldexp(t_hi, -b);
-                    if (b > 0 && (tb < lv.start || c.terms.back() <= 1)) break;
-                    const double lt = std::log10(tb);
-                    std::size_t need = 1;
-                    for (std::size_t i = 0; i < n_out; ++i) {
-                        double top = -1e300;
-                        for (std::size_t n = 0; n <= n_max; ++n) top = std::max(top, log_mu[i][n] + double(n) * lt);
-                        if (top < -1e299) continue;
-                        // smallest N with sum_{n >= N} |mu_n| tb^n <= 2^-60 top
-                        double tail = 0;
-                        std::size_t N = n_max + 1;
-                        while (N > 0) {
-                            const double add = std::pow(10.0, log_mu[i][N - 1] + double(N - 1) * lt - top);
-                            if (tail + add > std::ldexp(1.0, -60)) break;
-                            tail += add;
-                            --N;
-                        }
-                        need = std::max(need, N);
-                    }
-                    c.bound.push_back(tb);
-                    c.terms.push_back(need);
-                }
-                c.series = true;
-                c.length = c.terms.front();
-                c.coeff.assign(n_out * c.length, 0.0);
-                for (std::size_t i = 0; i < n_out; ++i)
-                    for (std::size_t n = 0; n < c.length; ++n)
-                        c.coeff[i * c.length + n] = {weight * dbl(mu[i][n].real()), weight * dbl(mu[i][n].imag())};
-                lv.clusters.push_back(std::move(c));
-            }
-            levels_.push_back(std::move(lv));
-        }
+        for (std::size_t j = 0; j <= lengths.size(); ++j)
+            levels_.push_back(level_of(s, tree, lengths, j, R, needed_digits));
         if (needed_digits <= digits || attempt >= 4) {
             if (needed_digits > digits)
                 throw domain_error("spectral evaluator: the cancellation needs more than " + std::to_string(digits) +

@@ -68,6 +68,24 @@ struct spectral_options {
     double resolution = 2.0;
 };
 
+namespace detail {
+/// One group of exponents at one level of the compiled form.
+struct spectral_cluster {
+    double re_hi = 0, re_lo = 0, im_hi = 0, im_lo = 0;  ///< centre c = (re_hi + re_lo) + i (im_hi + im_lo)
+    bool series = false;        ///< moments (true) or the polynomial of a single exponent (false)
+    std::size_t length = 0;     ///< coefficients per output
+    std::vector<std::complex<double>> coeff;  ///< [output][n]: mu_n or the polynomial's coefficients
+    /// series: terms needed for |t| <= bound (bounds decreasing, terms decreasing)
+    std::vector<double> bound;
+    std::vector<std::size_t> terms;
+};
+/// The clusters used from |t| = start on (up to the next level's start).
+struct spectral_level {
+    double start = 0;
+    std::vector<spectral_cluster> clusters;
+};
+}  // namespace detail
+
 /// A real quasi-polynomial in one input t, compiled for evaluation by clusters
 /// of its exponents.
 class spectral_function {
@@ -90,19 +108,8 @@ public:
     std::vector<double> operator()(double t) const;
 
 private:
-    struct cluster {
-        double re_hi = 0, re_lo = 0, im_hi = 0, im_lo = 0;  ///< centre c = (re_hi + re_lo) + i (im_hi + im_lo)
-        bool series = false;        ///< moments (true) or the polynomial of a single exponent (false)
-        std::size_t length = 0;     ///< coefficients per output
-        std::vector<std::complex<double>> coeff;  ///< [output][n]: mu_n or the polynomial's coefficients
-        /// series: terms needed for |t| <= bound (bounds decreasing, terms decreasing)
-        std::vector<double> bound;
-        std::vector<std::size_t> terms;
-    };
-    struct level {
-        double start = 0;
-        std::vector<cluster> clusters;
-    };
+    using cluster = detail::spectral_cluster;
+    using level = detail::spectral_level;
     std::size_t n_outputs_ = 0, n_exponents_ = 0;
     std::vector<level> levels_;
 };

@@ -191,6 +191,17 @@ ex sign_free_sqrt(const ex& x) {
     return tidy(canonical_radicals(sqrt_polynomial(GiNaC::numer(n)) / sqrt_polynomial(GiNaC::denom(n))));
 }
 
+int discriminant_sign(const ex& disc) {
+    const int sign = sign_generic(disc);
+    if (sign != 2) return sign;
+    // generic reading: a (minus a) square of an expression free of radicals and of I,
+    // such as -4 (w0 - W)^2, is read as negative (positive)
+    const auto is_square = [](const ex& r) { return !has_radical(r) && !r.has(GiNaC::I); };
+    if (is_square(sign_free_sqrt(tidy(-disc)))) return -1;
+    if (is_square(sign_free_sqrt(disc))) return 1;
+    return 2;
+}
+
 std::vector<polynomial_root> factor_roots(const ex& f, const GiNaC::symbol& X, unsigned m, const std::string& where,
                                           bool undecided_as_pair) {
     const int d = f.degree(X);
@@ -199,15 +210,8 @@ std::vector<polynomial_root> factor_roots(const ex& f, const GiNaC::symbol& X, u
         const ex c2 = f.coeff(X, 2), c1 = f.coeff(X, 1), c0 = f.coeff(X, 0);
         const ex disc = tidy(c1 * c1 - 4 * c2 * c0);
         const ex a = tidy(-c1 / (2 * c2));
-        int sign = sign_generic(disc);
-        if (sign == 2) {
-            // generic reading: a (minus a) square of an expression free of radicals and of I,
-            // such as -4 (w0 - W)^2, is read as negative (positive)
-            const auto is_square = [](const ex& r) { return !has_radical(r) && !r.has(GiNaC::I); };
-            if (is_square(sign_free_sqrt(tidy(-disc)))) sign = -1;
-            else if (is_square(sign_free_sqrt(disc))) sign = 1;
-            else if (undecided_as_pair) sign = -1;
-        }
+        int sign = discriminant_sign(disc);
+        if (sign == 2 && undecided_as_pair) sign = -1;
         switch (sign) {
             case 0: return {{a, ex(0), 2 * m, f}};
             case 1: {

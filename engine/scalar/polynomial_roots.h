@@ -51,6 +51,12 @@ std::vector<polynomial_factor> rational_factors(const GiNaC::ex& q, const GiNaC:
 /// numbers (sqrt(-4) = 2 I, sqrt(8) = 2 sqrt(2)) and on squares of polynomials.
 GiNaC::ex sign_free_sqrt(const GiNaC::ex& x);
 
+/// The sign of a quadratic's discriminant: sign_generic, and where that is undecided the generic
+/// reading of a square: disc = -(a square of an expression free of radicals and of I), such as
+/// -4 (w0 - W)^2, is negative, disc = such a square positive (the square's base read non-zero);
+/// 2 when still undecided.
+int discriminant_sign(const GiNaC::ex& disc);
+
 /// A root re + i im (im == 0: real); a complex pair re +- i im is stored once.
 struct polynomial_root {
     GiNaC::ex re, im;

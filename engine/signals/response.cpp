@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "algebra/exact_linear.h"
 #include "scalar/equality.h"
 #include "scalar/scalar.h"
 #include "algebra/multicomplex.h"
@@ -93,26 +96,6 @@ GiNaC::matrix multiplication_matrix(const algebra& A, const coeffs& u) {
     return M;
 }
 
-// A solution of M x = y (rows >= columns), free unknowns 0; false when inconsistent.
-bool solve_any(const GiNaC::matrix& M, const std::vector<ex>& y, coeffs& x) {
-    const unsigned n = M.cols();
-    GiNaC::matrix vars(n, 1), rhs(M.rows(), 1);
-    std::vector<GiNaC::symbol> unknowns(n);
-    for (unsigned j = 0; j < n; ++j) vars(j, 0) = unknowns[j];
-    for (unsigned i = 0; i < M.rows(); ++i) rhs(i, 0) = y[i];
-    GiNaC::matrix s;
-    try {
-        s = M.solve(vars, rhs, GiNaC::solve_algo::gauss);
-    } catch (const std::runtime_error&) {
-        return false;  // "inconsistent linear system"
-    }
-    GiNaC::exmap free;
-    for (unsigned j = 0; j < n; ++j) free[unknowns[j]] = 0;
-    x.assign(n, ex(0));
-    for (unsigned j = 0; j < n; ++j) x[j] = tidy(s(j, 0).subs(free));
-    return true;
-}
-
 // sum c_k D^k applied to x(t), c from the polynomial in l.
 ex apply_operator(const ex& poly, const GiNaC::symbol& l, const ex& x, const GiNaC::symbol& t) {
     const ex P = GiNaC::expand(poly);
@@ -154,6 +137,21 @@ bool cubic_roots_only_numeric(const ex& residual, const GiNaC::symbol& t) {
 
 }  // namespace
 
+std::string kind_text(response_kind k) {
+    switch (k) {
+        case response_kind::passed: return "passed";
+        case response_kind::partially_filtered: return "partially filtered";
+        case response_kind::filtered_out: return "filtered out";
+        case response_kind::resonant: return "resonant";
+        case response_kind::not_distorted: return "not distorted";
+        case response_kind::corrected: return "corrected";
+        case response_kind::distorted: return "distorted";
+    }
+    return "unknown";
+}
+
+std::ostream& operator<<(std::ostream& os, response_kind k) { return os << kind_text(k); }
+
 ex system_polynomial(const std::vector<ex>& a, const GiNaC::symbol& l) {
     ex p = 0;
     for (std::size_t k = 0; k < a.size(); ++k) p += a[k] * GiNaC::pow(l, int(a.size() - 1 - k));
@@ -183,13 +181,31 @@ ex apply_shift(const ex& poly, const GiNaC::symbol& l, const ex& x, const GiNaC:
     return out;
 }
 
-system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t,
-                           bool discrete) {
+// The input's side of the system: f in the variable t, analog (the derivative D) or digital
+// (the shift E): its element, its signal and an operator polynomial applied to a signal.
+struct input_signal {
+    const ex& f;
+    const GiNaC::symbol& t;
+    bool discrete;
+
+    coeffs element(const representation& Rep) const {
+        return discrete ? sequence_element(Rep, f, t) : element_of(Rep, f, t);
+    }
+    ex signal(const representation& Rep, const coeffs& u) const {
+        return discrete ? sequence_formula(Rep, u, t) : signal_of(Rep, u, t);
+    }
+    ex apply(const ex& poly, const GiNaC::symbol& X, const ex& x) const {
+        return discrete ? apply_shift(poly, X, x, t) : apply_operator(poly, X, x, t);
+    }
+};
+
+// The system a_0 x^(m) + ... = b_0 f^(p) + ... with constant coefficients and a_0 != 0; analog:
+// m > p (IV.3.7; at m = p the zero-state response jumps at t = 0); digital: m >= p.
+void check_system(const std::vector<ex>& a, const std::vector<ex>& b, const GiNaC::symbol& t, bool discrete) {
     if (a.empty() || is_zero_scalar(a[0]))
         throw domain_error("response: the leading coefficient a_0 of the system is 0");
     if (b.empty()) throw domain_error("response: the input side b_0 .. b_p is empty");
     const std::size_t m = a.size() - 1;
-    // analog: m > p (IV.3.7; at m = p the zero-state response jumps at t = 0); digital: m >= p
     if (m < 1 || b.size() - 1 > m || (!discrete && b.size() - 1 == m))
         throw domain_error(std::string("response: the system needs order ") + (discrete ? "m >= p" : "m > p") +
                            " (IV.3.7): m = " + std::to_string(m) + ", p = " + std::to_string(b.size() - 1));
@@ -197,41 +213,44 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
         if (c.has(t)) throw domain_error("response: a coefficient a_k depends on " + t.get_name());
     for (const ex& c : b)
         if (c.has(t)) throw domain_error("response: a coefficient b_k depends on " + t.get_name());
-    system_response out;
-    const GiNaC::symbol X("X");
-    const ex r = discrete ? sequence_annihilator(f, t, X) : annihilator(f, t, X);
-    const auto element = [&](const representation& Rep) {
-        return discrete ? sequence_element(Rep, f, t) : element_of(Rep, f, t);
-    };
-    const auto signal = [&](const representation& Rep, const coeffs& u) {
-        return discrete ? sequence_formula(Rep, u, t) : signal_of(Rep, u, t);
-    };
-    const auto apply = [&](const ex& poly, const ex& x) {
-        return discrete ? apply_shift(poly, X, x, t) : apply_operator(poly, X, x, t);
-    };
-    out.input_equation = r;
-    const ex P = system_polynomial(a, X), Q = system_polynomial(b, X);
+}
 
-    // the input's class: A = P_r, d = v (IV.3.10-16)
-    const representation R = polynomial_representation(r, X);
-    const algebra& A = *R.A;
-    const coeffs w = element(R);
-    const coeffs pd = A.evaluate_polynomial(P.subs(X == R.X), R.X, R.d);
-    const coeffs qd = A.evaluate_polynomial(Q.subs(X == R.X), R.X, R.d);
-    const coeffs y = A.multiply(qd, w);
-    const bool zero_divisor = A.is_zero_divisor(pd);
-    coeffs xw;
-    const std::vector<ex> yv(y.begin(), y.end());
-    const bool solvable = solve_any(multiplication_matrix(A, pd), yv, xw);
+// p(d) x = q(d) Psi(f) in the input's class: A = P_r, d = v (IV.3.10-16).
+struct class_solution {
+    explicit class_solution(representation rep) : R(std::move(rep)) {}
+    representation R;
+    coeffs pd;         // p(d)
+    coeffs y;          // q(d) Psi(f)
+    bool zero_divisor = false;
+    bool solvable = false;
+    coeffs x;          // a solution, where solvable
+};
 
-    // the zero-state response on P_Pi, Pi = p r (Thm IV.3.2.1): p(v) x = q(v) F and
-    // lambda(x v^k) = x^(k)(0) = 0, k < m
-    std::string zero_state_refused;
+class_solution solve_in_input_class(const input_signal& in, const ex& r, const GiNaC::symbol& X, const ex& P,
+                                    const ex& Q) {
+    class_solution s(polynomial_representation(r, X));
+    const algebra& A = *s.R.A;
+    const coeffs w = in.element(s.R);
+    s.pd = A.evaluate_polynomial(P.subs(X == s.R.X), s.R.X, s.R.d);
+    const coeffs qd = A.evaluate_polynomial(Q.subs(X == s.R.X), s.R.X, s.R.d);
+    s.y = A.multiply(qd, w);
+    s.zero_divisor = A.is_zero_divisor(s.pd);
+    const std::vector<ex> yv(s.y.begin(), s.y.end());
+    s.solvable = solve_any(multiplication_matrix(A, s.pd), yv, s.x);
+    return s;
+}
+
+// The zero-state response on P_Pi, Pi = p r (Thm IV.3.2.1): p(v) x = q(v) F and
+// lambda(x v^k) = x^(k)(0) = 0, k < m. Sets out.zero_state, or out.has_zero_state = false and
+// returns why (exp on P_Pi needs the roots of p r: a sign not decided).
+std::string derive_zero_state(const input_signal& in, const std::vector<ex>& a, const ex& r,
+                              const GiNaC::symbol& X, const ex& P, const ex& Q, system_response& out) {
+    const std::size_t m = a.size() - 1;
     try {
         const ex Pi = GiNaC::expand(P * r / a[0]);
         const representation B = polynomial_representation(Pi, X);
         const std::size_t N = B.A->dim();
-        const coeffs F = element(B);
+        const coeffs F = in.element(B);
         const GiNaC::matrix PM = multiplication_matrix(*B.A, B.A->evaluate_polynomial(P.subs(X == B.X), B.X, B.d));
         const coeffs QF = B.A->multiply(B.A->evaluate_polynomial(Q.subs(X == B.X), B.X, B.d), F);
         GiNaC::matrix M{static_cast<unsigned>(N + m), static_cast<unsigned>(N)};
@@ -247,100 +266,143 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
             vk = B.A->multiply(vk, B.d);
         }
         coeffs xs;
-        if (!solve_any(M, rhs, xs)) throw algebra_error("internal: the zero-state response of the system has no solution");
-        out.zero_state = signal(B, xs);
-
-
-    } catch (const closed_form_error& e) {  // exp on P_Pi needs the roots of p r (a sign not decided)
+        if (!solve_any(M, rhs, xs))
+            throw algebra_error("internal: the zero-state response of the system has no solution");
+        out.zero_state = in.signal(B, xs);
+    } catch (const closed_form_error& e) {
         out.has_zero_state = false;
         out.zero_state = 0;
-        zero_state_refused = e.what();
+        return e.what();
     }
-    if (algebra::equal(y, A.zero())) {
-        out.kind = "filtered out";
+    return {};
+}
+
+// Case b of IV.3.2 where the response's least equation has lower order than the input's, else
+// passed (with the report `passed`).
+std::pair<response_kind, std::string> order_case(long order, long input_order, std::string passed) {
+    if (order < input_order)
+        return {response_kind::partially_filtered, "partially filtered: the response satisfies an equation of order " +
+                                                       std::to_string(order) + " < " + std::to_string(input_order) +
+                                                       ", the order of the input's (case b of IV.3.2)"};
+    return {response_kind::passed, std::move(passed)};
+}
+
+// The order of the response's least equation: the dimension of the span of x, d x, d^2 x, ...
+// (the least g with g(d) x = 0). Case b of IV.3.2 prints "the minimal polynomial of the
+// element", which is not it: the unit has minimal polynomial X - 1, yet represents the impulse
+// response, of order n.
+unsigned response_order(const algebra& A, const coeffs& x, const coeffs& d) {
+    const std::size_t n = A.dim();
+    GiNaC::matrix K{static_cast<unsigned>(n), static_cast<unsigned>(n)};
+    coeffs u = x;
+    for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t i = 0; i < n; ++i) K(unsigned(i), unsigned(k)) = u[i];
+        u = A.multiply(u, d);
+    }
+    return K.rank();
+}
+
+// A response in the input's class: passed or partially filtered (case b), and where it holds.
+void classify_in_class(const class_solution& s, const input_signal& in, system_response& out) {
+    const algebra& A = *s.R.A;
+    out.particular = in.signal(s.R, s.x);
+    const std::size_t n = A.dim();  // the order of the input's least equation
+    std::tie(out.kind, out.report) =
+        order_case(response_order(A, s.x, s.R.d), long(n),
+                   "passed: the response is in the input's class, x = Psi^-1[H(d) Psi(f)] (IV.3.16)");
+    if (s.zero_divisor) {
+        out.report += "; p(d) is a zero divisor, but the input has no component on the modes p shares "
+                      "with it (no resonance)";
+        return;
+    }
+    // generic in the parameters: say where it stops holding
+    const ex det = GiNaC::factor(tidy(A.determinant(s.pd)));
+    bool symbolic = false;
+    for (auto it = det.preorder_begin(); it != det.preorder_end(); ++it)
+        symbolic = symbolic || GiNaC::is_a<GiNaC::symbol>(*it);
+    if (symbolic)
+        out.report += "; for parameters with det p(d) = " + text(det) +
+                      " not 0 (where it is 0, p shares a mode with the input)";
+}
+
+// The cases of IV.3.2: filtered out (a), in the input's class (passed, b), or resonant (e:
+// then the particular response is the zero-state response, on the algebra of p r).
+void classify(const class_solution& s, const input_signal& in, const ex& P, const ex& r, const GiNaC::symbol& X,
+              const std::string& zero_state_refused, system_response& out) {
+    if (algebra::equal(s.y, s.R.A->zero())) {
+        out.kind = response_kind::filtered_out;
         out.particular = 0;
         out.report = "filtered out: q(d) Psi(f) = 0 (q vanishes on every mode of the input), so the particular "
                      "response is 0 (case a of IV.3.2)";
-    } else if (solvable) {
-        out.particular = signal(R, xw);
-        // the order of the response's least equation: the dimension of the span of x, d x,
-        // d^2 x, ... (the least g with g(d) x = 0). Case b of IV.3.2 prints "the minimal
-        // polynomial of the element", which is not it: the unit has minimal polynomial
-        // X - 1, yet represents the impulse response, of order n.
-        const std::size_t n = A.dim();
-        GiNaC::matrix K{static_cast<unsigned>(n), static_cast<unsigned>(n)};
-        coeffs u = xw;
-        for (std::size_t k = 0; k < n; ++k) {
-            for (std::size_t i = 0; i < n; ++i) K(unsigned(i), unsigned(k)) = u[i];
-            u = A.multiply(u, R.d);
-        }
-        const unsigned order = K.rank();
-        if (order < n) {
-            out.kind = "partially filtered";
-            out.report = "partially filtered: the response satisfies an equation of order " + std::to_string(order) +
-                         " < " + std::to_string(n) + ", the order of the input's (case b of IV.3.2)";
-        } else {
-            out.kind = "passed";
-            out.report = "passed: the response is in the input's class, x = Psi^-1[H(d) Psi(f)] (IV.3.16)";
-        }
-        if (zero_divisor) {
-            out.report += "; p(d) is a zero divisor, but the input has no component on the modes p shares "
-                          "with it (no resonance)";
-        } else {
-            // generic in the parameters: say where it stops holding
-            const ex det = GiNaC::factor(tidy(A.determinant(pd)));
-            bool symbolic = false;
-            for (auto it = det.preorder_begin(); it != det.preorder_end(); ++it)
-                symbolic = symbolic || GiNaC::is_a<GiNaC::symbol>(*it);
-            if (symbolic)
-                out.report += "; for parameters with det p(d) = " + text(det) +
-                              " not 0 (where it is 0, p shares a mode with the input)";
-        }
-    } else {
-        out.kind = "resonant";
-        if (!out.has_zero_state)
-            throw domain_error("response: the input resonates with the system, and its response (on the "
-                               "polynomial algebra of p r) is not derived: " + zero_state_refused);
-        out.particular = out.zero_state;
-        const GiNaC::symbol Y;
-        const ex common = GiNaC::gcd(GiNaC::expand(P.subs(X == Y)), GiNaC::expand(r.subs(X == Y)));
-        out.report = "resonant: p and the input's equation share the factor " +
-                     polynomial_text(common.subs(Y == X), X) +
-                     " and q does not cancel it, so no response is in the input's class (case e of IV.3.2); "
-                     "the response has secular terms and lives on the polynomial algebra of p r (Thm IV.3.2.1)";
+        return;
     }
-    // one form whatever the pivots of the linear solves were (they follow GiNaC's term order,
-    // which depends on the session's history and on addresses): coefficients in the field of
-    // their square root
-    // (numeric coefficients: radicals of rationals; with parameters the forms stay as derived)
+    if (s.solvable) {
+        classify_in_class(s, in, out);
+        return;
+    }
+    out.kind = response_kind::resonant;
+    if (!out.has_zero_state)
+        throw domain_error("response: the input resonates with the system, and its response (on the "
+                           "polynomial algebra of p r) is not derived: " + zero_state_refused);
+    out.particular = out.zero_state;
+    const GiNaC::symbol Y;
+    const ex common = GiNaC::gcd(GiNaC::expand(P.subs(X == Y)), GiNaC::expand(r.subs(X == Y)));
+    out.report = "resonant: p and the input's equation share the factor " + polynomial_text(common.subs(Y == X), X) +
+                 " and q does not cancel it, so no response is in the input's class (case e of IV.3.2); "
+                 "the response has secular terms and lives on the polynomial algebra of p r (Thm IV.3.2.1)";
+}
+
+// One form whatever the pivots of the linear solves were (they follow GiNaC's term order,
+// which depends on the session's history and on addresses): coefficients in the field of
+// their square root (numeric coefficients: radicals of rationals; with parameters
+// parameter_form).
+void canonical_forms(system_response& out, const GiNaC::symbol& t) {
     const auto canonical_form = [&](const ex& x) {
         for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
             if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t)) return parameter_form(x, t);
         return GiNaC::expand(simplified_square_roots(x, t, true));
     };
-    if (!discrete) {
-        out.particular = canonical_form(out.particular);
-        if (out.has_zero_state) out.zero_state = canonical_form(out.zero_state);
-    }
-    // every response substituted into the system (IV.3.7)
-    const ex lhs_minus_rhs = [&](const ex& x) {
-        return tidy(GiNaC::expand(apply(P, x) - apply(Q, f)));
-    }(out.particular);
-    const ex zs = out.has_zero_state ? tidy(GiNaC::expand(apply(P, out.zero_state) - apply(Q, f))) : ex(0);
-    if (!out.has_zero_state) out.report += "; the zero-state response is not derived: " + zero_state_refused;
+    out.particular = canonical_form(out.particular);
+    if (out.has_zero_state) out.zero_state = canonical_form(out.zero_state);
+}
+
+// Every response substituted into the system (IV.3.7): the residuals p(D) x - q(D) f proved 0
+// (or, over the roots of an irreducible cubic, 0 to 45 digits); an unproved residual is refused.
+void verify_response(const system_response& out, const input_signal& in, const ex& P, const ex& Q,
+                     const GiNaC::symbol& X) {
+    const ex lhs_minus_rhs = tidy(GiNaC::expand(in.apply(P, X, out.particular) - in.apply(Q, X, in.f)));
+    const ex zs = out.has_zero_state ? tidy(GiNaC::expand(in.apply(P, X, out.zero_state) - in.apply(Q, X, in.f)))
+                                     : ex(0);
     for (const ex& residual : {lhs_minus_rhs, zs}) {
         if (is_zero_scalar(residual)) continue;
         const zero_decision z = decide_zero(residual);
         if (z.is_zero == truth::no)
             throw algebra_error("internal: a derived response does not satisfy the system (residual " +
                                 text(residual) + ", not 0 " + witness_text(z) + ")");
-        if (z.is_zero == truth::unknown && cubic_roots_only_numeric(residual, t)) continue;
+        if (z.is_zero == truth::unknown && cubic_roots_only_numeric(residual, in.t)) continue;
         if (z.is_zero == truth::unknown)
             throw domain_error("response: the derived response is not proved to satisfy the system (the residual " +
                                text(residual) +
                                " is neither proved 0 nor seen nonzero; with square roots of squares such as "
                                "sqrt(w^2), declaring the parameters positive lets the proof through)");
     }
+}
+
+system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, const ex& f, const GiNaC::symbol& t,
+                           bool discrete) {
+    check_system(a, b, t, discrete);
+    system_response out;
+    const GiNaC::symbol X("X");
+    const ex r = discrete ? sequence_annihilator(f, t, X) : annihilator(f, t, X);
+    const input_signal in{f, t, discrete};
+    out.input_equation = r;
+    const ex P = system_polynomial(a, X), Q = system_polynomial(b, X);
+    const class_solution s = solve_in_input_class(in, r, X, P, Q);
+    const std::string zero_state_refused = derive_zero_state(in, a, r, X, P, Q, out);
+    classify(s, in, P, r, X, zero_state_refused, out);
+    if (!discrete) canonical_forms(out, t);
+    if (!out.has_zero_state) out.report += "; the zero-state response is not derived: " + zero_state_refused;
+    verify_response(out, in, P, Q, X);
     return out;
 }
 
@@ -384,7 +446,7 @@ algebra_response respond_over(const algebra_ptr& A, const coeffs& d, const std::
                                 message_text(residual, 200) + (z.is_zero == truth::no ? ")" : ", not proved 0)"));
     }
     if (algebra::equal(out.element, A->zero())) {
-        out.kind = "filtered out";
+        out.kind = response_kind::filtered_out;
         out.report = "filtered out: H(d) Psi(f) = 0, the response is 0 (case a of IV.3.2)";
         return out;
     }
@@ -393,33 +455,30 @@ algebra_response respond_over(const algebra_ptr& A, const coeffs& d, const std::
     if (const auto* M = dynamic_cast<const multicomplex*>(A.get())) {
         const truth in = amplitude_modulated(*M, w).holds, h = amplitude_modulated(*M, H).holds,
                     y = amplitude_modulated(*M, out.element).holds;
+        bool special = true;  // one of the cases c, d of the special type (or its converse)
         if (in == truth::yes && h == truth::yes) {
-            out.kind = "not distorted";
+            out.kind = response_kind::not_distorted;
             out.report = "not distorted: Psi(f) and H(d) are of special type, so is their product: the response is "
                          "amplitude-modulated on the same carriers as the input (case c of IV.3.2)";
         } else if (in == truth::no && y == truth::yes) {
-            out.kind = "corrected";
+            out.kind = response_kind::corrected;
             out.report = "corrected: Psi(f) is not of special type but H(d) Psi(f) is, so the system removes the "
                          "input's phase modulation (case d of IV.3.2)";
         } else if (in == truth::yes && y == truth::no) {
-            out.kind = "distorted";
+            out.kind = response_kind::distorted;
             out.report = "distorted: the input is amplitude-modulated (Psi(f) of special type) and the response is not";
+        } else {
+            special = false;
         }
-        if (!out.kind.empty()) {
+        if (special) {
             if (order_out < order_in)
                 out.report += "; also partially filtered: order " + std::to_string(order_out) + " < " +
                               std::to_string(order_in) + " (case b)";
             return out;
         }
     }
-    if (order_out < order_in) {
-        out.kind = "partially filtered";
-        out.report = "partially filtered: the response satisfies an equation of order " + std::to_string(order_out) +
-                     " < " + std::to_string(order_in) + ", the order of the input's (case b of IV.3.2)";
-    } else {
-        out.kind = "passed";
-        out.report = "passed: x = Psi^-1[H(d) Psi(f)] on " + A->name() + " (IV.3.16)";
-    }
+    std::tie(out.kind, out.report) =
+        order_case(order_out, order_in, "passed: x = Psi^-1[H(d) Psi(f)] on " + A->name() + " (IV.3.16)");
     return out;
 }
 

@@ -23,6 +23,7 @@
 // (residual proved 0) before it is returned.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,23 @@ struct frequency_response {
 frequency_response frequency_response_of(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b,
                                          const GiNaC::ex& w);
 
+/// The cases of IV.3.2 a response falls in (respond: the first four; respond_over: all but resonant).
+enum class response_kind {
+    passed,              ///< x = Psi^-1[H(d) Psi(f)] in the input's class (IV.3.16)
+    partially_filtered,  ///< b: the response's least equation has lower order than the input's
+    filtered_out,        ///< a: q(d) Psi(f) = 0, the particular response is 0
+    resonant,            ///< e: not solvable in the input's class (secular terms, Thm IV.3.2.1)
+    not_distorted,       ///< c: Psi(f) and H(d) of special type (IV.1.57)
+    corrected,           ///< d: Psi(f) not of special type, H(d) Psi(f) of special type
+    distorted,           ///< the input of special type, the response not
+};
+/// The name of the case as reports print it: "passed", "partially filtered", "filtered out",
+/// "resonant", "not distorted", "corrected", "distorted".
+std::string kind_text(response_kind k);
+std::ostream& operator<<(std::ostream& os, response_kind k);
+
 struct system_response {
-    std::string kind;       ///< "passed", "partially filtered", "filtered out" or "resonant"
+    response_kind kind = response_kind::passed;  ///< passed, partially filtered, filtered out or resonant
     GiNaC::ex particular;   ///< in the input's class (IV.3.16); resonant: the zero-state response
     GiNaC::ex zero_state;   ///< x^(k)(0) = 0, k < m
     bool has_zero_state = true;  ///< false where the roots of p r are not decided (then `report` says why)
@@ -65,16 +81,17 @@ system_response respond(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC
 
 /// (IV.3.13-16, cases a-e of IV.3.2 on any algebra) The particular response x = Psi^-1[H(d) Psi(f)]
 /// on the algebra of d (a multicomplex algebra for cases c-d), the input f solving q(D) f = 0 for q the
-/// minimal polynomial of d. kind: "filtered out" (a: H(d) Psi(f) = 0), "partially filtered" (b: the
-/// response's least equation has lower order than the input's), "not distorted" (c: Psi(f) and H(d)
-/// of special type, IV.1.57, so the response is amplitude-modulated like the input), "corrected" (d:
-/// Psi(f) not of special type, H(d) Psi(f) of special type), "distorted" (the input of special type,
-/// the response not), or "passed". p(d) a zero divisor (case e) is a zero_divisor_error from
+/// minimal polynomial of d. kind: filtered out (a: H(d) Psi(f) = 0), partially filtered (b: the
+/// response's least equation has lower order than the input's), not distorted (c: Psi(f) and H(d)
+/// of special type, IV.1.57, so the response is amplitude-modulated like the input), corrected (d:
+/// Psi(f) not of special type, H(d) Psi(f) of special type), distorted (the input of special type,
+/// the response not), or passed. p(d) a zero divisor (case e) is a zero_divisor_error from
 /// transmittance(). The response is substituted into the system before it is returned.
 struct algebra_response {
     coeffs element;        ///< H(d) Psi(f)
     GiNaC::ex particular;  ///< its signal
-    std::string kind, report;
+    response_kind kind = response_kind::passed;
+    std::string report;
 };
 algebra_response respond_over(const algebra_ptr& A, const coeffs& d, const std::vector<GiNaC::ex>& a,
                               const std::vector<GiNaC::ex>& b, const GiNaC::ex& f, const GiNaC::symbol& t);
