@@ -11,8 +11,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "mechanics/fixed_axis.h"
-#include "mechanics/turning_frame.h"
+#include "mechanics/cauchy_problem.h"
 #include "scalar/scalar.h"
 #include "syntax/parser.h"
 #include "output/printer.h"
@@ -414,6 +413,51 @@ void session::declare(const node& n) {
     }
 }
 
+// ode(...)'s equation E = lhs - rhs into P, evaluated with the unknown and its derivatives
+// (the order is the number of initial values) bound as x, x', ...; `at` is the equation's place.
+void session::ode_equation(mechanics::cauchy_problem& P, const node& eq, bool vector, const source_location& at) {
+    const std::size_t M = P.initial.size();
+    P.is_vector = vector;
+    P.unknowns.clear();
+    if (vector) {
+        GiNaC::ex x = GiNaC::realsymbol(P.name);
+        register_vector_function(x, P.t);
+        P.unknowns.push_back(x);
+        for (std::size_t m = 1; m <= M; ++m) P.unknowns.push_back(derivative(P.unknowns.back()));
+    } else {
+        for (std::size_t m = 0; m <= M; ++m) P.unknowns.push_back(GiNaC::realsymbol(P.unknown_name(m)));
+    }
+    std::map<std::string, std::optional<value>> saved;
+    for (std::size_t m = 0; m <= M; ++m) {
+        const std::string nm = P.unknown_name(m);
+        const value* old = get(nm);
+        saved[nm] = old ? std::optional<value>(*old) : std::nullopt;
+        vars_[nm] = value(P.unknowns[m]);
+    }
+    auto restore = [&] {
+        for (auto& [nm, v] : saved) {
+            if (v) vars_[nm] = *v;
+            else vars_.erase(nm);
+        }
+    };
+    value lhs, rhs;
+    try {
+        lhs = eval(*eq.kids[0]);
+        rhs = eval(*eq.kids[1]);
+    } catch (...) {
+        restore();
+        throw;
+    }
+    restore();
+    const value E = binary_op("-", lhs, rhs);
+    if (!E.is_ex())
+        throw script_error("ode: the equation must be between expressions, not " + lhs.a_kind() + " and " +
+                               rhs.a_kind(), at);
+    P.expression = E.as_ex();
+    if (vector && !E.as_ex().is_zero() && !is_vector(E.as_ex()))
+        throw script_error("ode: the equation is scalar but the initial values are vectors", at);
+}
+
 // ode(EQUATION, x(0) = X0, x'(0) = X1, ...): the unknown x is a function of t;
 // it is a vector when an initial value is. The equation is evaluated with x,
 // x', ... bound to the unknown and its derivatives.
@@ -477,102 +521,19 @@ value session::ode_form(const node& n) {
         for (const auto& c : k.kids) scan(*c);
     };
     scan(eq);
-    // The unknown and its derivatives (the order is the number of conditions),
-    // bound as x, x', ... while the equation is evaluated.
-    auto build = [&](bool vector) {
-        P.is_vector = vector;
-        P.unknowns.clear();
-        if (vector) {
-            GiNaC::ex x = GiNaC::realsymbol(P.name);
-            register_vector_function(x, P.t);
-            P.unknowns.push_back(x);
-            for (std::size_t m = 1; m <= M; ++m) P.unknowns.push_back(derivative(P.unknowns.back()));
-        } else {
-            for (std::size_t m = 0; m <= M; ++m) P.unknowns.push_back(GiNaC::realsymbol(P.unknown_name(m)));
-        }
-        std::map<std::string, std::optional<value>> saved;
-        for (std::size_t m = 0; m <= M; ++m) {
-            const std::string nm = P.unknown_name(m);
-            const value* old = get(nm);
-            saved[nm] = old ? std::optional<value>(*old) : std::nullopt;
-            vars_[nm] = value(P.unknowns[m]);
-        }
-        auto restore = [&] {
-            for (auto& [nm, v] : saved) {
-                if (v) vars_[nm] = *v;
-                else vars_.erase(nm);
-            }
-        };
-        value lhs, rhs;
-        try {
-            lhs = eval(*eq.kids[0]);
-            rhs = eval(*eq.kids[1]);
-        } catch (...) {
-            restore();
-            throw;
-        }
-        restore();
-        const value E = binary_op("-", lhs, rhs);
-        if (!E.is_ex())
-            throw script_error("ode: the equation must be between expressions, not " + lhs.a_kind() + " and " +
-                                   rhs.a_kind(), where(eq));
-        P.expression = E.as_ex();
-        if (vector && !E.as_ex().is_zero() && !is_vector(E.as_ex()))
-            throw script_error("ode: the equation is scalar but the initial values are vectors", where(eq));
-    };
     // initial values that are all 0 leave the kind open: a vector if the equation is one
     const bool open = !P.is_vector && std::all_of(P.initial.begin(), P.initial.end(), [](const ex& e) { return e.is_zero(); });
     if (open) {
         try {
-            build(true);
+            ode_equation(P, eq, true, where(eq));
         } catch (const std::exception&) {
-            build(false);
+            ode_equation(P, eq, false, where(eq));
         }
     } else {
-        build(P.is_vector);
+        ode_equation(P, eq, P.is_vector, where(eq));
     }
     // read once, now: errors point at ode(...), and solve() uses the result
-    try {
-        P.reduced = std::make_shared<const mechanics::operator_form>(mechanics::reduce(P));
-    } catch (const domain_error&) {
-        // a rotating frame with w(t) = s(t) u (VI.2): solved by reduction to the inertial problem
-        // a turning w(t) or a central field (VI.3): r = F_(-w)(psi), evaluated numerically
-        std::string why, why3;
-        std::optional<mechanics::fixed_axis_form> fa;
-        std::optional<mechanics::turning_frame_form> tf;
-        try {
-            fa = mechanics::read_fixed_axis(P, &why);
-            if (!fa) tf = mechanics::read_turning_frame(P, &why3);
-        } catch (const error& e) {
-            if (!dynamic_cast<const domain_error*>(&e) && !dynamic_cast<const type_error*>(&e)) throw;
-            why3 = e.what();
-        }
-        std::shared_ptr<mechanics::cauchy_problem> V;
-        if (!fa && !tf && P.is_vector && M == 2 && !P.expression.has(P.unknowns[0])) {
-            // (VI.2.50-52) x itself absent: the first-order problem for v = x' (a charge in B(t)),
-            // then x = x(0) + int_0^t v
-            V = std::make_shared<mechanics::cauchy_problem>(P);
-            V->name = P.name + "'";
-            V->unknowns = {P.unknowns[1], P.unknowns[2]};
-            V->initial = {P.initial[1]};
-            std::string whyv;
-            try {
-                if (auto fv = mechanics::read_fixed_axis(*V, &whyv))
-                    V->fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fv));
-                else if (auto tv = mechanics::read_turning_frame(*V, &whyv))
-                    V->turning = std::make_shared<const mechanics::turning_frame_form>(std::move(*tv));
-            } catch (const error& e) {
-                if (!dynamic_cast<const domain_error*>(&e) && !dynamic_cast<const type_error*>(&e)) throw;
-            }
-            if (!V->fixed_axis && !V->turning) V.reset();
-        }
-        if (fa) P.fixed_axis = std::make_shared<const mechanics::fixed_axis_form>(std::move(*fa));
-        else if (tf) P.turning = std::make_shared<const mechanics::turning_frame_form>(std::move(*tf));
-        else if (V) P.velocity = V;
-        else if (!why.empty()) throw domain_error(why);  // a fixed axis, in another form: its reason
-        else if (!why3.empty()) throw domain_error(why3);
-        else throw;
-    }
+    mechanics::read_problem(P);
     return value(std::make_shared<const mechanics::cauchy_problem>(std::move(P)));
 }
 

@@ -190,6 +190,7 @@ private:
     value iterate(const builtin& b, const node& n);
     void declare(const node& n);
     value ode_form(const node& n);
+    void ode_equation(mechanics::cauchy_problem& P, const node& eq, bool vector, const source_location& at);
     void report(const source_location& where, const std::string& msg);
     void exec(const node& stmt, bool echo);
 

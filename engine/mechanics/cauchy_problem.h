@@ -22,6 +22,13 @@
 // over the data vectors P (initial values, forcing vectors) in coordinate-free
 // form, with |w| for Omega. check() substitutes a solution back: the residual
 // and the initial differences, each exactly 0 for a solution.
+//
+// This header declares; the work is in three files:
+//   problem_reading.cpp  reduce(), and read_problem(): the reading made once when a problem
+//                        is posed (the operator form, else fixed_axis.h, turning_frame.h or
+//                        the velocity problem)
+//   cauchy_solve.cpp     solve(), solve_unwitnessed(), vector_solution()
+//   solution_check.cpp   check() (its zero proofs: residual_proof.h)
 #pragma once
 
 #include <memory>
@@ -79,6 +86,17 @@ struct operator_form {
 /// vectors act on x by x (the operators do not commute), when a coefficient
 /// depends on t, or when the free part is not a quasi-polynomial in t.
 operator_form reduce(const cauchy_problem& P);
+
+/// Reads P once, for solve() and the solvers after it, and keeps the reading in P: the
+/// operator form (P.reduced) when reduce() takes P; otherwise a rotating frame about a fixed
+/// axis (P.fixed_axis, VI.2), a turning frame or central field (P.turning, VI.3), or, for a
+/// second-order vector problem without x itself, the first-order problem for v = x' when one of
+/// those readings takes it (P.velocity, VI.2.50-52). When none does: domain_error with the
+/// fixed-axis reading's reason, else the turning-frame reading's, else reduce()'s error.
+void read_problem(cauchy_problem& P);
+
+/// Floating-point numbers (scalar/floats.h) in E or in an initial value of P.
+bool problem_has_float(const cauchy_problem& P);
 
 /// The exact solution x(t), coordinate-free (vector symbols, cross, dot, |w|).
 /// Errors as reduce() and solve(operator_ode, ...) (closed_form_error when a
