@@ -460,18 +460,17 @@ value builtin_eval(const builtin& b, const args_t& a, context&) {
         throw type_error(b.name + ": no time given");
     // the symbols of e other than t are constants: a value that depends on t would
     // evaluate a frozen solution of a different problem without a word (refused)
-    if (!times.empty())
-        for (const auto& [k, x] : d.scalars)
-                if (x.has(tsym))
-                    throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
-                                       print_ex(tsym) + ": the values are constants (the expression is "
-                                       "evaluated at " + print_ex(tsym) + " = T)");
-    if (!times.empty())
-        for (const auto& [k, x] : d.vectors)
+    const auto constants = [&](const auto& values) {
+        for (const auto& [k, x] : values)
             if (x.has(tsym))
                 throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
                                    print_ex(tsym) + ": the values are constants (the expression is "
                                    "evaluated at " + print_ex(tsym) + " = T)");
+    };
+    if (!times.empty()) {
+        constants(d.scalars);
+        constants(d.vectors);
+    }
     // e at the values: where they make it divide by zero, its limit as the values approach
     // them (put_values_limit); where that is not established, the denominator named and
     // solve(P, values) proposed (it derives the solution of that scene)

@@ -151,6 +151,7 @@ value builtin_represent_sequence(const builtin& b, const std::vector<value>& a, 
     return represent_signal(a, ctx, b, true);
 }
 
+// read as signal reads its arguments; the closed form is lambda(w d^k), not lambda(w exp(d t))
 value builtin_sequence_formula(const builtin& b, const std::vector<value>& a, context&) {
     const element& w = arg_element(a, 0, b);
     const GiNaC::symbol& k = arg_symbol(a, 1, b);
