@@ -28,21 +28,22 @@ std::string value::a_kind() const {
     return (k == "expression" || k == "element" || k == "algebra" ? "an " : "a ") + k;
 }
 
-void add_builtin(registry& r, const char* section, std::string name, std::string signature, std::string summary,
-                 std::string equation, std::string example, std::size_t min_args, std::size_t max_args,
-                 builtin_body body) {
-    builtin b;
-    b.name = std::move(name);
-    b.signature = std::move(signature);
-    b.summary = std::move(summary);
-    b.equation = std::move(equation);
-    b.example = std::move(example);
-    b.section = section;
-    b.min_args = min_args;
-    b.max_args = max_args;
-    auto self = std::make_shared<builtin>(b);
-    b.fn = [self, body = std::move(body)](const std::vector<value>& a, context& c) { return body(*self, a, c); };
-    r.add(std::move(b));
+void add_builtins(registry& r, const std::string& section, std::vector<builtin_declaration> table) {
+    for (builtin_declaration& d : table) {
+        builtin b;
+        b.name = std::move(d.name);
+        b.signature = std::move(d.signature);
+        b.summary = std::move(d.summary);
+        b.equation = std::move(d.equation);
+        b.example = std::move(d.example);
+        b.section = section;
+        b.min_args = d.min_args;
+        b.max_args = d.max_args;
+        // the body sees the builtin as registered (without fn: no cycle through the shared copy)
+        auto self = std::make_shared<const builtin>(b);
+        b.fn = [self, body = std::move(d.body)](const std::vector<value>& a, context& c) { return body(*self, a, c); };
+        r.add(std::move(b));
+    }
 }
 
 void registry::add(builtin b) {

@@ -7,9 +7,13 @@
 //
 // Builtins are registered explicitly (no static initializers, which a static
 // library would drop): the interpreter calls every register_* function below.
+// Each module declares its builtins one way: a table of builtin_declaration rows
+// (name, signature, summary, equation, example, arity, body) given to add_builtins,
+// each body a named function `builtin_NAME` in the module's lang/builtins_<module>.cpp.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -50,7 +54,7 @@ struct builtin {
     std::string example;    ///< a statement that runs, e.g. "inverse(mc(1, [1,2,0,0]))"
     std::string section;    ///< grouping in the reference, e.g. "Multicomplex algebra"
     std::size_t min_args = 0;
-    std::size_t max_args = 0;  ///< SIZE_MAX for variadic
+    std::size_t max_args = 0;  ///< any_number for variadic
     std::function<value(const std::vector<value>& args, context& ctx)> fn;
 };
 
@@ -66,12 +70,34 @@ private:
     std::map<std::string, builtin> table_;
 };
 
-/// The body of a builtin: it receives the builtin itself (for the arg_* checkers' messages).
-using builtin_body = std::function<value(const builtin&, const std::vector<value>&, context&)>;
-/// Registers a builtin in `section` whose body receives the builtin itself.
-void add_builtin(registry& r, const char* section, std::string name, std::string signature, std::string summary,
-                 std::string equation, std::string example, std::size_t min_args, std::size_t max_args,
-                 builtin_body body);
+/// The body of a builtin: a named function beside the module it serves
+/// (lang/builtins_<module>.cpp). It receives the builtin itself (its name and signature,
+/// for the arg_* checkers' messages), the arguments (their number already checked against
+/// the arity) and the session.
+using builtin_body = std::function<value(const builtin& self, const std::vector<value>& args, context& ctx)>;
+
+/// max_args of a builtin that takes any number of arguments from min_args on.
+inline constexpr std::size_t any_number = SIZE_MAX;
+
+/// The one way to declare a builtin: a row of its module's registration table,
+///
+///     {name, signature, summary, equation, example, min_args, max_args, body}
+///
+/// e.g. {"inverse", "inverse(w)", "The inverse of ...", "(III.1.57)", "inverse(mc(1, [1,2,0,0]))", 1, 1,
+/// builtin_inverse}. The texts are those of `builtin` (`symrep --doc`, help); the equation may be "".
+struct builtin_declaration {
+    std::string name;
+    std::string signature;
+    std::string summary;
+    std::string equation;
+    std::string example;
+    std::size_t min_args = 0;
+    std::size_t max_args = 0;  ///< any_number for variadic
+    builtin_body body;
+};
+
+/// Registers every row of `table` in `section` (a name registered twice: std::logic_error).
+void add_builtins(registry& r, const std::string& section, std::vector<builtin_declaration> table);
 
 // --- argument checking: each throws type_error naming the function and argument
 const element& arg_element(const std::vector<value>& args, std::size_t i, const builtin& b);
@@ -97,13 +123,13 @@ void register_sobrero_builtins(registry& r);      // lang/builtins_sobrero.cpp
 void register_walsh_builtins(registry& r);        // lang/builtins_walsh.cpp
 void register_polynomial_builtins(registry& r);   // lang/builtins_polynomial.cpp
 void register_output_builtins(registry& r);       // lang/builtins_output.cpp
-void register_check_builtins(registry& r);        // lang/builtins_check.cpp: expect, expect_near
+void register_expect_builtins(registry& r);       // lang/builtins_expect.cpp: expect, expect_near
 void register_mechanics_builtins(registry& r);    // lang/builtins_mechanics.cpp: ode, check, eval, verify
 void register_rules_builtins(registry& r);        // lang/builtins_rules.cpp: load_rules, rewrite, rules
-void register_plot_builtins(registry& r);
+void register_plot_builtins(registry& r);         // lang/builtins_plot.cpp: plot, trajectory, hodograph
 void register_transforms_builtins(registry& r);  // lang/builtins_transforms.cpp: laplace, inverse_laplace, transform
 void register_identification_builtins(registry& r);  // lang/builtins_identification.cpp: identify, operational matrices
-void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling         // lang/builtins_plot.cpp: plot, trajectory, hodograph
+void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling
 
 /// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).
 value solve_problem(const value& p);

@@ -10,7 +10,7 @@ namespace symrep::lang {
 void register_all_builtins(registry& r) {
     register_core_builtins(r);
     register_algebra_builtins(r);
-    register_check_builtins(r);
+    register_expect_builtins(r);
     register_mechanics_builtins(r);
     register_rules_builtins(r);
     register_sobrero_builtins(r);

@@ -184,166 +184,168 @@ std::string shown(double x) {
     return os.str();
 }
 
+value builtin_walsh_coefficients(const builtin& b, const std::vector<value>& a, context&) {
+    if (a.size() == 1) {
+        const std::vector<GiNaC::ex> xs = arg_ex_list(a, 0, b);
+        list out;
+        for (const auto& c : id::walsh_from_blocks(xs)) out.push_back(value(c));
+        return out;
+    }
+    if (a.size() != 3) throw type_error(b.name + ": usage " + b.signature);
+    const GiNaC::symbol& t = arg_symbol(a, 1, b);
+    const unsigned n = unsigned(arg_int(a, 2, b, 1, 16));
+    const GiNaC::ex& f = arg_ex(a, 0, b);
+    list out;
+    if (!has_matrix(f) && id::is_piecewise_polynomial(f, t)) {
+        for (const auto& c : id::walsh_from_blocks(id::block_averages_exact(f, t, n))) out.push_back(value(c));
+        return out;
+    }
+    const jump_signal sig = signal_of(f, time_span{&t, 1.0}, b, "the signal");
+    return number_list(id::walsh_from_blocks(id::block_averages(sig.f, n, 1.0, sig.jumps)));
+}
+
+value builtin_walsh_blocks(const builtin& b, const std::vector<value>& a, context&) {
+    list out;
+    for (const auto& v : id::blocks_from_walsh(arg_ex_list(a, 0, b))) out.push_back(value(v));
+    return out;
+}
+
+value builtin_operational_matrix(const builtin& b, const std::vector<value>& a, context&) {
+    const unsigned n = unsigned(arg_int(a, 0, b, 1, 8));
+    if (a.size() == 1) return GiNaC::ex(id::operational_matrix_exact(n));
+    const GiNaC::ex& me = arg_ex(a, 1, b);
+    if (!GiNaC::is_a<GiNaC::numeric>(me) || !GiNaC::ex_to<GiNaC::numeric>(me).is_integer() ||
+        GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(me)) > 64)
+        throw type_error(b.name + ": the power m must be an integer from -64 to 64 (usage: " + b.signature + ")");
+    return GiNaC::ex(id::operational_matrix_power_exact(n, GiNaC::ex_to<GiNaC::numeric>(me).to_long()));
+}
+
+value builtin_block_pulse_matrix(const builtin& b, const std::vector<value>& a, context&) {
+    return GiNaC::ex(id::block_pulse_matrix_exact(unsigned(arg_int(a, 0, b, 1, 8))));
+}
+
+value builtin_simulate_system(const builtin& b, const std::vector<value>& a, context&) {
+    const GiNaC::symbol& x = arg_symbol(a, 1, b);
+    const time_span sp = span_arg(a, 3, b);
+    const unsigned n = unsigned(arg_int(a, 4, b, 1, 16));
+    std::vector<double> coeffs{0, 0};
+    if (a.size() == 6) {
+        coeffs.clear();
+        for (const auto& e : arg_ex_list(a, 5, b)) coeffs.push_back(to_double(e, b, "a coefficient a_k"));
+    }
+    const auto f = function_of(arg_ex(a, 0, b), x, b, "f");
+    const jump_signal u = signal_of(arg_ex(a, 2, b), sp, b, "the input u");
+    const id::measured_system s = id::simulate_system(f, u.f, coeffs, n, sp.T);
+    return list{value(number_list(s.q)), value(number_list(s.u))};
+}
+
+value builtin_identify_points(const builtin& b, const std::vector<value>& a, context& c) {
+    const time_span sp = span_arg(a, 2, b);
+    const unsigned n = unsigned(arg_int(a, 3, b, 2, 16));
+    const id::identification_report rep = id::identify_values(system_arg(a, sp, n, b), linear_part_arg(a, 4, b), 0);
+    if (!rep.warning.empty())
+        c.report_fields(b.name, "warning: " + rep.warning + "\n",
+                        "\"warning\": " + output::json_quote(rep.warning));
+    list out;
+    for (std::size_t k = 0; k < rep.points_q.size(); ++k)
+        out.push_back(value(list{value(GiNaC::ex(num::from_double(rep.points_q[k]))),
+                                 value(GiNaC::ex(num::from_double(rep.values_f[k])))}));
+    return out;
+}
+
+value builtin_identify(const builtin& b, const std::vector<value>& a, context& c) {
+    const time_span sp = span_arg(a, 2, b);
+    const unsigned n = unsigned(arg_int(a, 3, b, 1, 16));
+    const GiNaC::symbol& x = arg_symbol(a, 4, b);
+    const unsigned d = unsigned(arg_int(a, 5, b, 0, 20));
+    const id::linear_part lin = linear_part_arg(a, 6, b);
+    const std::string method = a.size() == 8 ? arg_string(a, 7, b) : "integral";
+    const id::measured_system s = system_arg(a, sp, n, b);
+    id::identification_report rep;
+    if (method == "integral") rep = id::identify_integral(s, lin, d);
+    else if (method == "values") rep = id::identify_values(s, lin, d);
+    else if (method == "sindy") rep = id::identify_sindy_cv(s, lin, d);
+    else if (method == "derivatives") rep = id::identify_sindy(s, lin, d, 0.0);
+    else
+        throw type_error(b.name + ": unknown method \"" + method +
+                         "\" (\"integral\", \"values\", \"sindy\" or \"derivatives\")");
+    std::ostringstream prose;
+    prose << "identify (" << method << "): " << rep.points << " points, condition number "
+          << shown(rep.condition_number) << ", residual of the integrated equation " << shown(rep.residual);
+    if (method == "sindy")
+        prose << ", window " << rep.window << " samples, threshold " << shown(rep.threshold);
+    prose << "\n";
+    if (!rep.warning.empty()) prose << "warning: " << rep.warning << "\n";
+    std::string fields = "\"method\": " + output::json_quote(method) +
+                         ", \"points\": " + std::to_string(rep.points) +
+                         ", \"condition_number\": " + json_number(rep.condition_number) +
+                         ", \"residual\": " + json_number(rep.residual) + ", \"f\": " + json_numbers(rep.f) +
+                         ", \"a\": " + json_numbers(rep.a) + ", \"T\": " + json_number(sp.T);
+    if (method == "sindy")
+        fields += ", \"window\": " + std::to_string(rep.window) + ", \"threshold\": " + json_number(rep.threshold);
+    fields += ", \"warning\": " + output::json_quote(rep.warning);
+    c.report_fields(b.name, prose.str(), fields);
+    const GiNaC::ex f = polynomial(rep.f, x);
+    if (std::all_of(lin.begin(), lin.end(), [](const auto& k) { return k.has_value(); })) return f;
+    list as;
+    for (double v : rep.a) as.push_back(value(GiNaC::ex(num::from_double(v))));
+    return list{value(f), value(as)};
+}
+
 }  // namespace
 
 void register_identification_builtins(registry& r) {
-    add_builtin(
-        r, section, "walsh_coefficients", "walsh_coefficients(f, t, n) | walsh_coefficients(values)",
-        "The 2^n Walsh coefficients c_p = int_0^1 f w_p dt (IV.2.4) of f on [0, 1), Walsh functions in Paley's "
-        "ordering (the one in which P is the recursion IV.2.19). Exact for a piecewise polynomial f in t (polynomials, "
-        "step(a t + b), abs(a t + b) with rational a, b), by Gauss-Kronrod quadrature otherwise; from a list of 2^n block values (block averages) by the fast Walsh-Hadamard "
-        "transform, exact for exact values.",
-        "(IV.2.4-5, IV.2.10)", "walsh_coefficients(t^2, t, 2)", 1, 3,
-        [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            if (a.size() == 1) {
-                const std::vector<GiNaC::ex> xs = arg_ex_list(a, 0, b);
-                list out;
-                for (const auto& c : id::walsh_from_blocks(xs)) out.push_back(value(c));
-                return out;
-            }
-            if (a.size() != 3) throw type_error(b.name + ": usage " + b.signature);
-            const GiNaC::symbol& t = arg_symbol(a, 1, b);
-            const unsigned n = unsigned(arg_int(a, 2, b, 1, 16));
-            const GiNaC::ex& f = arg_ex(a, 0, b);
-            list out;
-            if (!has_matrix(f) && id::is_piecewise_polynomial(f, t)) {
-                for (const auto& c : id::walsh_from_blocks(id::block_averages_exact(f, t, n))) out.push_back(value(c));
-                return out;
-            }
-            const jump_signal sig = signal_of(f, time_span{&t, 1.0}, b, "the signal");
-            return number_list(id::walsh_from_blocks(id::block_averages(sig.f, n, 1.0, sig.jumps)));
-        });
-    add_builtin(
-        r, section, "walsh_blocks", "walsh_blocks(c)",
-        "The block values of the truncated Walsh series sum_p c_p w_p (2^n coefficients, Paley's ordering): v = W^T c "
-        "(IV.2.10), by the fast Walsh-Hadamard transform; the inverse of walsh_coefficients(values). Series given by "
-        "their Walsh coefficients enter identify() this way.",
-        "(IV.2.5, IV.2.10)", "walsh_blocks([1/3, -1/4, -1/8, 1/16])", 1, 1,
-        [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            list out;
-            for (const auto& v : id::blocks_from_walsh(arg_ex_list(a, 0, b))) out.push_back(value(v));
-            return out;
-        });
-    add_builtin(
-        r, section, "operational_matrix", "operational_matrix(n [, m])",
-        "P_(2^n), the operational matrix of integration in the Walsh basis: int_0^t w = P w (IV.2.18), by the "
-        "recursion P_1 = 1/2, P_m = [[P_(m/2), -I/(2m)], [I/(2m), 0]] (IV.2.19); exact, n = 1 .. 8. P = W Q W^T / 2^n "
-        "(IV.2.22-23, W the Walsh functions on the blocks). With m: the power P^m for any integer m (m = -1: the "
-        "inverse), through Q^m (IV.2.24, IV.2.51), never a dense inverse.",
-        "(IV.2.19, IV.2.24)", "operational_matrix(2, -1)", 1, 2,
-        [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            const unsigned n = unsigned(arg_int(a, 0, b, 1, 8));
-            if (a.size() == 1) return GiNaC::ex(id::operational_matrix_exact(n));
-            const GiNaC::ex& me = arg_ex(a, 1, b);
-            if (!GiNaC::is_a<GiNaC::numeric>(me) || !GiNaC::ex_to<GiNaC::numeric>(me).is_integer() ||
-                GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(me)) > 64)
-                throw type_error(b.name + ": the power m must be an integer from -64 to 64 (usage: " + b.signature + ")");
-            return GiNaC::ex(id::operational_matrix_power_exact(n, GiNaC::ex_to<GiNaC::numeric>(me).to_long()));
-        });
-    add_builtin(
-        r, section, "block_pulse_matrix", "block_pulse_matrix(n)",
-        "Q_(2^n), the operational matrix of integration in the block-pulse basis: int_0^t e = Q e (IV.2.20-21); "
-        "exact, n = 1 .. 8. Its characteristic and minimal polynomial are (lambda - 1/2^(n+1))^(2^n).",
-        "(IV.2.21)", "block_pulse_matrix(2)", 1, 1,
-        [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            return GiNaC::ex(id::block_pulse_matrix_exact(unsigned(arg_int(a, 0, b, 1, 8))));
-        });
-    add_builtin(
-        r, section, "simulate_system", "simulate_system(f, x, u, t, n [, [a_1, ..., a_m]])",
-        "The output of q^(m) + a_1 q^(m-1) + ... + a_m q + f(q) = u (IV.2.37; default m = 2, a = 0: IV.2.25) on "
-        "[0, T) from zero initial data, integrated by Boost.Odeint (rkf78, 1e-12): [q, u] as two lists of 2^n "
-        "block averages, the data identify() reads. f is an expression in x, u in t (with jumps: step, sign, abs of "
-        "a t + b). t: the time (T = 1) or t = [0, T].",
-        "(IV.2.25, IV.2.37)", "simulate_system(4*x + x^3, x, 10*sin(2*pi*t), t, 3)", 5, 6,
-        [](const builtin& b, const std::vector<value>& a, context&) -> value {
-            const GiNaC::symbol& x = arg_symbol(a, 1, b);
-            const time_span sp = span_arg(a, 3, b);
-            const unsigned n = unsigned(arg_int(a, 4, b, 1, 16));
-            std::vector<double> coeffs{0, 0};
-            if (a.size() == 6) {
-                coeffs.clear();
-                for (const auto& e : arg_ex_list(a, 5, b)) coeffs.push_back(to_double(e, b, "a coefficient a_k"));
-            }
-            const auto f = function_of(arg_ex(a, 0, b), x, b, "f");
-            const jump_signal u = signal_of(arg_ex(a, 2, b), sp, b, "the input u");
-            const id::measured_system s = id::simulate_system(f, u.f, coeffs, n, sp.T);
-            return list{value(number_list(s.q)), value(number_list(s.u))};
-        });
-    add_builtin(
-        r, section, "identify_points", "identify_points(q, u, t, n [, [a_1, ..., a_m]])",
-        "The table of the thesis's procedure (IV.2.36, IV.2.45): the values of f at the points q_e, [[q_k, f_k], ...], "
-        "from the linear system for the vector f, neighbours averaged m times to cancel the alternating pole of "
-        "(Q^T)^-m (2^n - m points; docs/identification.md). q, u and t as in identify; every a_k known (default [0, 0]).",
-        "(IV.2.32-36, IV.2.45)",
-        "identify_points(simulate_system(4*x + x^3, x, 10*sin(2*pi*t), t, 3)[0], 10*sin(2*pi*t), t, 3)", 4, 5,
-        [](const builtin& b, const std::vector<value>& a, context& c) -> value {
-            const time_span sp = span_arg(a, 2, b);
-            const unsigned n = unsigned(arg_int(a, 3, b, 2, 16));
-            const id::identification_report rep = id::identify_values(system_arg(a, sp, n, b), linear_part_arg(a, 4, b), 0);
-            if (!rep.warning.empty())
-                c.report_fields(b.name, "warning: " + rep.warning + "\n",
-                                "\"warning\": " + output::json_quote(rep.warning));
-            list out;
-            for (std::size_t k = 0; k < rep.points_q.size(); ++k)
-                out.push_back(value(list{value(GiNaC::ex(num::from_double(rep.points_q[k]))),
-                                         value(GiNaC::ex(num::from_double(rep.values_f[k])))}));
-            return out;
-        });
-    add_builtin(
-        r, section, "identify", "identify(q, u, t, n, x, d [, [a_1, ..., a_m] [, method]])",
-        "The nonlinearity f of q^(m) + a_1 q^(m-1) + ... + a_m q + f(q) = u (IV.2.25, IV.2.37; zero initial data) "
-        "on [0, T) as a polynomial of degree d in x, from the measured output q and input u: expressions in t (with "
-        "jumps: step, sign, abs of a t + b) or lists of 2^n block averages. t: the time (T = 1) or t = [0, T]. a: "
-        "numbers (known) or symbols (unknown, estimated jointly; returns [f, [a_1, ..., a_m]]); default [0, 0]. "
-        "method \"integral\" (default): least squares in the integrated equation (IV.2.39) -- nothing is "
-        "differentiated; \"values\": the thesis's procedure, f at the 2^n points from the linear system (IV.2.36, "
-        "IV.2.45), its alternating pole cancelled, then fitted; \"sindy\": the SINDy pipeline (Savitzky-Golay "
-        "derivatives, thresholded least squares, window and threshold by cross-validation on held-out time blocks; "
-        "2^n >= 64); \"derivatives\": least squares on unsmoothed finite differences. Reports the points used, the "
-        "condition number, the residual of the integrated equation (and for sindy the window and threshold chosen); "
-        "an ill-conditioned fit is said with its number. Under --format json the report is one JSON line "
-        "{\"kind\": \"report\", \"from\": \"identify\", \"method\", \"points\", \"condition_number\", "
-        "\"residual\", \"f\", \"a\", \"T\", \"warning\"[, \"window\", \"threshold\"]}.",
-        "(IV.2.26-36, IV.2.39-46)",
-        "identify(simulate_system(4*x + 50*x^3, x, 40*sin(2*pi*t), t, 8)[0], 40*sin(2*pi*t), t, 8, x, 3)", 6, 8,
-        [](const builtin& b, const std::vector<value>& a, context& c) -> value {
-            const time_span sp = span_arg(a, 2, b);
-            const unsigned n = unsigned(arg_int(a, 3, b, 1, 16));
-            const GiNaC::symbol& x = arg_symbol(a, 4, b);
-            const unsigned d = unsigned(arg_int(a, 5, b, 0, 20));
-            const id::linear_part lin = linear_part_arg(a, 6, b);
-            const std::string method = a.size() == 8 ? arg_string(a, 7, b) : "integral";
-            const id::measured_system s = system_arg(a, sp, n, b);
-            id::identification_report rep;
-            if (method == "integral") rep = id::identify_integral(s, lin, d);
-            else if (method == "values") rep = id::identify_values(s, lin, d);
-            else if (method == "sindy") rep = id::identify_sindy_cv(s, lin, d);
-            else if (method == "derivatives") rep = id::identify_sindy(s, lin, d, 0.0);
-            else
-                throw type_error(b.name + ": unknown method \"" + method +
-                                 "\" (\"integral\", \"values\", \"sindy\" or \"derivatives\")");
-            std::ostringstream prose;
-            prose << "identify (" << method << "): " << rep.points << " points, condition number "
-                  << shown(rep.condition_number) << ", residual of the integrated equation " << shown(rep.residual);
-            if (method == "sindy")
-                prose << ", window " << rep.window << " samples, threshold " << shown(rep.threshold);
-            prose << "\n";
-            if (!rep.warning.empty()) prose << "warning: " << rep.warning << "\n";
-            std::string fields = "\"method\": " + output::json_quote(method) +
-                                 ", \"points\": " + std::to_string(rep.points) +
-                                 ", \"condition_number\": " + json_number(rep.condition_number) +
-                                 ", \"residual\": " + json_number(rep.residual) + ", \"f\": " + json_numbers(rep.f) +
-                                 ", \"a\": " + json_numbers(rep.a) + ", \"T\": " + json_number(sp.T);
-            if (method == "sindy")
-                fields += ", \"window\": " + std::to_string(rep.window) + ", \"threshold\": " + json_number(rep.threshold);
-            fields += ", \"warning\": " + output::json_quote(rep.warning);
-            c.report_fields(b.name, prose.str(), fields);
-            const GiNaC::ex f = polynomial(rep.f, x);
-            if (std::all_of(lin.begin(), lin.end(), [](const auto& k) { return k.has_value(); })) return f;
-            list as;
-            for (double v : rep.a) as.push_back(value(GiNaC::ex(num::from_double(v))));
-            return list{value(f), value(as)};
-        });
+    add_builtins(r, section, {
+        {"walsh_coefficients", "walsh_coefficients(f, t, n) | walsh_coefficients(values)",
+         "The 2^n Walsh coefficients c_p = int_0^1 f w_p dt (IV.2.4) of f on [0, 1), Walsh functions in Paley's "
+         "ordering (the one in which P is the recursion IV.2.19). Exact for a piecewise polynomial f in t (polynomials, "
+         "step(a t + b), abs(a t + b) with rational a, b), by Gauss-Kronrod quadrature otherwise; from a list of 2^n block values (block averages) by the fast Walsh-Hadamard "
+         "transform, exact for exact values.",
+         "(IV.2.4-5, IV.2.10)", "walsh_coefficients(t^2, t, 2)", 1, 3, builtin_walsh_coefficients},
+        {"walsh_blocks", "walsh_blocks(c)",
+         "The block values of the truncated Walsh series sum_p c_p w_p (2^n coefficients, Paley's ordering): v = W^T c "
+         "(IV.2.10), by the fast Walsh-Hadamard transform; the inverse of walsh_coefficients(values). Series given by "
+         "their Walsh coefficients enter identify() this way.",
+         "(IV.2.5, IV.2.10)", "walsh_blocks([1/3, -1/4, -1/8, 1/16])", 1, 1, builtin_walsh_blocks},
+        {"operational_matrix", "operational_matrix(n [, m])",
+         "P_(2^n), the operational matrix of integration in the Walsh basis: int_0^t w = P w (IV.2.18), by the "
+         "recursion P_1 = 1/2, P_m = [[P_(m/2), -I/(2m)], [I/(2m), 0]] (IV.2.19); exact, n = 1 .. 8. P = W Q W^T / 2^n "
+         "(IV.2.22-23, W the Walsh functions on the blocks). With m: the power P^m for any integer m (m = -1: the "
+         "inverse), through Q^m (IV.2.24, IV.2.51), never a dense inverse.",
+         "(IV.2.19, IV.2.24)", "operational_matrix(2, -1)", 1, 2, builtin_operational_matrix},
+        {"block_pulse_matrix", "block_pulse_matrix(n)",
+         "Q_(2^n), the operational matrix of integration in the block-pulse basis: int_0^t e = Q e (IV.2.20-21); "
+         "exact, n = 1 .. 8. Its characteristic and minimal polynomial are (lambda - 1/2^(n+1))^(2^n).",
+         "(IV.2.21)", "block_pulse_matrix(2)", 1, 1, builtin_block_pulse_matrix},
+        {"simulate_system", "simulate_system(f, x, u, t, n [, [a_1, ..., a_m]])",
+         "The output of q^(m) + a_1 q^(m-1) + ... + a_m q + f(q) = u (IV.2.37; default m = 2, a = 0: IV.2.25) on "
+         "[0, T) from zero initial data, integrated by Boost.Odeint (rkf78, 1e-12): [q, u] as two lists of 2^n "
+         "block averages, the data identify() reads. f is an expression in x, u in t (with jumps: step, sign, abs of "
+         "a t + b). t: the time (T = 1) or t = [0, T].",
+         "(IV.2.25, IV.2.37)", "simulate_system(4*x + x^3, x, 10*sin(2*pi*t), t, 3)", 5, 6, builtin_simulate_system},
+        {"identify_points", "identify_points(q, u, t, n [, [a_1, ..., a_m]])",
+         "The table of the thesis's procedure (IV.2.36, IV.2.45): the values of f at the points q_e, [[q_k, f_k], ...], "
+         "from the linear system for the vector f, neighbours averaged m times to cancel the alternating pole of "
+         "(Q^T)^-m (2^n - m points; docs/identification.md). q, u and t as in identify; every a_k known (default [0, 0]).",
+         "(IV.2.32-36, IV.2.45)", "identify_points(simulate_system(4*x + x^3, x, 10*sin(2*pi*t), t, 3)[0], 10*sin(2*pi*t), t, 3)",
+         4, 5, builtin_identify_points},
+        {"identify", "identify(q, u, t, n, x, d [, [a_1, ..., a_m] [, method]])",
+         "The nonlinearity f of q^(m) + a_1 q^(m-1) + ... + a_m q + f(q) = u (IV.2.25, IV.2.37; zero initial data) "
+         "on [0, T) as a polynomial of degree d in x, from the measured output q and input u: expressions in t (with "
+         "jumps: step, sign, abs of a t + b) or lists of 2^n block averages. t: the time (T = 1) or t = [0, T]. a: "
+         "numbers (known) or symbols (unknown, estimated jointly; returns [f, [a_1, ..., a_m]]); default [0, 0]. "
+         "method \"integral\" (default): least squares in the integrated equation (IV.2.39) -- nothing is "
+         "differentiated; \"values\": the thesis's procedure, f at the 2^n points from the linear system (IV.2.36, "
+         "IV.2.45), its alternating pole cancelled, then fitted; \"sindy\": the SINDy pipeline (Savitzky-Golay "
+         "derivatives, thresholded least squares, window and threshold by cross-validation on held-out time blocks; "
+         "2^n >= 64); \"derivatives\": least squares on unsmoothed finite differences. Reports the points used, the "
+         "condition number, the residual of the integrated equation (and for sindy the window and threshold chosen); "
+         "an ill-conditioned fit is said with its number. Under --format json the report is one JSON line "
+         "{\"kind\": \"report\", \"from\": \"identify\", \"method\", \"points\", \"condition_number\", "
+         "\"residual\", \"f\", \"a\", \"T\", \"warning\"[, \"window\", \"threshold\"]}.",
+         "(IV.2.26-36, IV.2.39-46)", "identify(simulate_system(4*x + 50*x^3, x, 40*sin(2*pi*t), t, 8)[0], 40*sin(2*pi*t), t, 8, x, 3)",
+         6, 8, builtin_identify},
+    });
 }
 
 }  // namespace symrep::lang

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include "scalar/scalar.h"
 #include "lang/builtins.h"
@@ -39,12 +40,6 @@ using args_t = std::vector<value>;
 namespace {
 
 const char* const section = "Vectors and mechanics";
-
-void add(registry& r, std::string name, std::string sig, std::string summary, std::string eq, std::string example,
-         std::size_t mn, std::size_t mx, builtin_body fn) {
-    add_builtin(r, section, std::move(name), std::move(sig), std::move(summary), std::move(eq), std::move(example),
-                mn, mx, std::move(fn));
-}
 
 ex vector_arg(const args_t& a, std::size_t i, const builtin& b) {
     const value& v = a[i];
@@ -221,13 +216,9 @@ value solve_scene(const builtin& b, const args_t& a, context& c) {
 
 namespace {
 
-// verify(P, s, values, T [, n [, stepper]]) for a solution by reduction: r and r'
-// (x for order 1) from Q psi against Boost.Odeint on P as stated in the rotating frame.
-value verify_reduction(const builtin& b, const args_t& a, context& c) {
-    const auto& P = problem_arg(a, 0, b);
-    const reduction& r = a[1].as_reduction();
-    if (r.derivative) throw type_error(b.name + ": argument 2 must be the solution, not its derivative");
-    const data_values d = reduction_values(r, read_values(a[2], b, 2));
+// The end time T, the number of sample times n (default 200) and the stepper (controlled:
+// rkf78 by default, tolerances 1e-12) of verify(P, s, values, T [, n [, stepper]]).
+std::tuple<double, long, num::integration_options> verify_arguments(const args_t& a, const builtin& b) {
     const double T = to_double(arg_ex(a, 3, b), b, "the end time T");
     if (!(T > 0) || !std::isfinite(T)) throw type_error(b.name + ": the end time T must be positive");
     const long n = a.size() > 4 ? arg_int(a, 4, b, 2, 10000000) : 200;
@@ -236,6 +227,17 @@ value verify_reduction(const builtin& b, const args_t& a, context& c) {
     if (a.size() > 5) opt.stepper = num::stepper_from_name(arg_string(a, 5, b));
     if (opt.stepper == num::stepper_kind::rk4)
         throw type_error(b.name + ": rk4 has no error control; use rkf78, bulirsch_stoer or dopri5");
+    return {T, n, opt};
+}
+
+// verify(P, s, values, T [, n [, stepper]]) for a solution by reduction: r and r'
+// (x for order 1) from Q psi against Boost.Odeint on P as stated in the rotating frame.
+value verify_reduction(const builtin& b, const args_t& a, context& c) {
+    const auto& P = problem_arg(a, 0, b);
+    const reduction& r = a[1].as_reduction();
+    if (r.derivative) throw type_error(b.name + ": argument 2 must be the solution, not its derivative");
+    const data_values d = reduction_values(r, read_values(a[2], b, 2));
+    const auto [T, n, opt] = verify_arguments(a, b);
     const auto t0 = std::chrono::steady_clock::now();
     data_values dp = d;
     dp.scalars.erase(P.t);
@@ -260,428 +262,454 @@ value verify_reduction(const builtin& b, const args_t& a, context& c) {
     return value(ex(num::from_double(v.max_relative_difference)));
 }
 
+value builtin_cross(const builtin& b, const args_t& a, context&) {
+    return value(cross(vector_arg(a, 0, b), vector_arg(a, 1, b)));
+}
+
+value builtin_dot(const builtin& b, const args_t& a, context&) {
+    return value(dot(vector_arg(a, 0, b), vector_arg(a, 1, b)));
+}
+
+value builtin_triple(const builtin& b, const args_t& a, context&) {
+    return value(triple(vector_arg(a, 0, b), vector_arg(a, 1, b), vector_arg(a, 2, b)));
+}
+
+value builtin_norm(const builtin& b, const args_t& a, context&) {
+    return value(norm(vector_arg(a, 0, b)));
+}
+
+value builtin_skew(const builtin& b, const args_t& a, context&) {
+    const ex w = vector_arg(a, 0, b);
+    if (!is_vector_literal(w))
+        throw type_error(b.name + ": argument 1 must be a vector given by its components [w1, w2, w3]");
+    const ex x = w.op(0), y = w.op(1), z = w.op(2);
+    return value(ex(GiNaC::matrix(3, 3, GiNaC::lst{0, -z, y, z, 0, -x, -y, x, 0})));
+}
+
+value builtin_rotation_operator(const builtin& b, const args_t& a, context&) {
+    const ex w = vector_arg(a, 0, b), t = arg_ex(a, 1, b), x = vector_arg(a, 2, b);
+    if (w.is_zero()) return value(x);
+    const GiNaC::possymbol W("|w|");
+    const mechanics::rotation_operator_algebra R(W);
+    const element E = R.exp_minus_Kt(t);
+    auto c = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
+    return value(c(0) * x + c(1) * cross(w, x) + c(2) * cross(w, cross(w, x)));
+}
+
+value builtin_F(const builtin& b, const args_t& a, context& c) {
+    const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
+    if (w.is_zero() || x.is_zero() || equal(w, 0)) return value(x);
+    try {
+        mechanics::require_value_at_zero(w, t, "w(t)");
+    } catch (const domain_error& e) {
+        throw domain_error(b.name + ": " + e.what());
+    }
+    // F_w = F_(-v) with v = -w, the Q of v (turning_frame.h): closed for a fixed direction
+    // (a constant w too; VI.2.12, the angle an integral object when not elementary) and for
+    // a regular precession
+    mechanics::turning_frame_form F;
+    F.terms.w = -w;
+    if (const auto d = mechanics::fixed_direction(w, t)) {  // -w = s(t) (-u): the angle of w about -u
+        F.u = -d->second;
+        F.angle = mechanics::rotation_angle(d->first, d->second, t, true);
+    } else {
+        F.precessing = mechanics::regular_precession(-w, t);
+    }
+    if (const auto y = mechanics::closed_rotation(F, x, t))  // literals: one literal
+        return value(vector_symbols(*y).empty() ? subs_components(*y, {}) : *y);
+    if (mechanics::depends_on_time(x, t))
+        throw domain_error(b.name + ": w(t) = " + print_ex(w) + " turns, so R has no closed form, and x = " +
+                           print_ex(x) + " depends on t: F_w(x) is evaluated for a constant x only "
+                           "(F(w, x0), then eval)");
+    return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+        mechanics::reduced_solution{mechanics::rotation_problem(w, x, t), {}, true})});
+}
+
+value builtin_vector_series(const builtin& b, const args_t& a, context&) {
+    const ex& e = arg_ex(a, 0, b);
+    const ex& w = arg_ex(a, 1, b);
+    if (!is_vector_symbol(w))
+        throw type_error(b.name + ": argument 2 must be a vector symbol (usage: " + b.signature + ")");
+    const long n = arg_int(a, 2, b, 0, 60);
+    // |w| and w . w through a positive symbol W, so that |eps w| = eps W
+    const GiNaC::possymbol eps("eps"), W("W");
+    const ex ew = e.subs(norm(w) == W).subs(dot(w, w) == GiNaC::pow(W, 2));
+    const ex es = subs_vectors(ew, {{w, eps * w}}).subs(W == eps * W);
+    const ex ser = GiNaC::series_to_poly(es.series(eps == 0, int(n) + 1));
+    return value(GiNaC::expand(ser.subs(eps == 1)).subs(W == norm(w)));
+}
+
+value builtin_ode(const builtin& b, const args_t&, context&) {
+    throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
+}
+
+value builtin_first_integrals(const builtin& b, const args_t& a, context&) {
+    const auto& P = problem_arg(a, 0, b);
+    if (P.turning) {
+        list out;
+        for (const ex& I : mechanics::first_integrals(P, *P.turning)) out.push_back(value(I));
+        return value(out);
+    }
+    std::string why;
+    const auto fa = P.fixed_axis ? std::optional<mechanics::fixed_axis_form>(*P.fixed_axis)
+                                 : mechanics::read_fixed_axis(P, &why);
+    if (!fa)
+        throw domain_error(b.name + ": the problem is not m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 "
+                           "with w = s(t) u" + (why.empty() ? std::string() : " (" + why + ")"));
+    list out;
+    for (const ex& I : mechanics::first_integrals(P, *fa)) out.push_back(value(I));
+    return value(out);
+}
+
+value builtin_check(const builtin& b, const args_t& a, context& c) {
+    const auto& P0 = problem_arg(a, 0, b);
+    if (a[1].is_reduction())
+        throw domain_error(b.name + ": the solution is the reduction " + P0.name +
+                           " = F_(-w)(psi) (Thm VI.3.2.1, proved once for all w in the tests), not a closed "
+                           "form in t: compare it with the equation numerically, verify(P, s, values, T)");
+    const mechanics::parameter_values vals =
+        a.size() == 3 ? scene_values(a, 2, b) : mechanics::parameter_values{};
+    const mechanics::cauchy_problem P = a.size() == 3 ? mechanics::with_values(P0, vals) : P0;
+    // the values go into s too (a general solution checked for the scene's values)
+    const ex s0 = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
+    const ex s = a.size() == 3 ? mechanics::put_values(s0, vals) : s0;
+    const mechanics::solution_check k = mechanics::check(P, s);
+    // a vector as the language writes it: one literal [x, y, z] when no vector symbol is left
+    auto shown = [&](const ex& x) {
+        if (P.is_vector && is_vector(x) && vector_symbols(x).empty())
+            return print_ex(subs_components(x, {}));
+        return print_ex(x);
+    };
+    if (!k) {
+        // false only when shown: a residual or difference that is neither proved 0 nor
+        // seen nonzero at a point is undecided (scalar/equality.h), never reported as false
+        std::vector<std::pair<std::string, ex>> open;
+        bool some_no = k.residual_seen_nonzero;
+        if (!k.residual_zero && !k.residual_seen_nonzero) open.push_back({"the residual", k.residual});
+        for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
+            if (!k.initial_differences[m].is_zero())
+                open.push_back({P.unknown_name(m) + "(0) minus its value", k.initial_differences[m]});
+        std::string undecided;
+        for (const auto& [what, x] : open) {
+            const zero_decision z = P.is_vector ? decide_zero_vector(x) : decide_zero(x);
+            // a point value of an integral object is a quadrature's, not exact: with one,
+            // a residual not proved 0 stays undecided
+            if (z.is_zero == truth::no && !num::has_integral(x)) some_no = true;
+            if ((z.is_zero != truth::no || num::has_integral(x)) && undecided.empty())
+                undecided = what + " " + shown(x);
+        }
+        if (!some_no && !undecided.empty())
+            throw domain_error(b.name + ": cannot decide whether " + undecided +
+                               " is 0 (the zero test does not prove it, and no point was found where it "
+                               "is not 0)");
+    }
+    if (!k.residual_zero) c.out() << "check: the residual is " << shown(k.residual) << ", not 0\n";
+    if (k && k.rounding > 0) {
+        std::ostringstream ratio;  // not on c.out(): its precision stays as it is
+        ratio << std::setprecision(2) << k.rounding;
+        c.out() << "check: 0 up to rounding (floating-point values): what remains is at most " << ratio.str()
+                << " times the largest term\n";
+    }
+    for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
+        if (!k.initial_differences[m].is_zero())
+            c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "
+                    << shown(k.initial_differences[m]) << "\n";
+    return value(bool(k));
+}
+
+value builtin_model(const builtin& b, const args_t& a, context&) {
+    return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
+}
+
+value builtin_eval(const builtin& b, const args_t& a, context&) {
+    if (a[0].is_reduction()) {  // r = F_(-w)(psi) (or r') at the given times, numerically
+        const reduction& red = a[0].as_reduction();
+        if (a.size() != 3)
+            throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
+        const ex& tr = arg_ex(a, 2, b);
+        if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(red.solution->problem->t))
+            throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
+        std::vector<double> times;
+        const ex T = tr.rhs();
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
+            times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
+        const auto x = reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
+        if (x.size() == 1 && !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T)) return triple_value(x[0]);
+        list out;
+        for (const auto& v : x) out.push_back(triple_value(v));
+        return value(out);
+    }
+    // floats taken as the exact numbers they are, so that nothing is rounded before
+    // to_double's precision-controlled evaluation (cancellation, long phases)
+    const ex e = num::exact_floats_of(arg_ex(a, 0, b));
+    const data_values d = exact_values(read_values(a[1], b, 1));
+    std::vector<ex> times;
+    ex tsym;
+    if (a.size() == 3) {
+        const ex& tr = arg_ex(a, 2, b);
+        if (!GiNaC::is_a<GiNaC::relational>(tr) || !GiNaC::is_a<GiNaC::symbol>(tr.lhs()))
+            throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
+        tsym = tr.lhs();
+        const ex T = tr.rhs();
+        if (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T))  // t = [T1, T2, ...]
+            for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::decimal_floats_of(T.op(i)));
+        else
+            times.push_back(num::decimal_floats_of(T));  // t = 1e300 is 10^300 (a long phase shows the difference)
+    }
+    if (a.size() == 3 && a[2].is_ex() && times.empty())
+        throw type_error(b.name + ": no time given");
+    // the symbols of e other than t are constants: a value that depends on t would
+    // evaluate a frozen solution of a different problem without a word (refused)
+    const auto constants = [&](const auto& values) {
+        for (const auto& [k, x] : values)
+            if (x.has(tsym))
+                throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
+                                   print_ex(tsym) + ": the values are constants (the expression is "
+                                   "evaluated at " + print_ex(tsym) + " = T)");
+    };
+    if (!times.empty()) {
+        constants(d.scalars);
+        constants(d.vectors);
+    }
+    // e at the values: where they make it divide by zero, its limit as the values approach
+    // them (put_values_limit); where that is not established, the denominator named and
+    // solve(P, values) proposed (it derives the solution of that scene)
+    auto at = [&](const data_values& dv) -> value {
+        try {
+            return numbers(put_values_limit(e, dv, tsym), b);
+        } catch (const domain_error& x) {
+            const std::string m = x.what();
+            if (m.rfind(singular_values_message, 0) != 0) throw;
+            throw domain_error(b.name + ": " + m + "; for a solution of a problem P, solve(P, values) "
+                               "derives the solution of this scene");
+        }
+    };
+    try {
+        if (times.empty()) return at(d);
+        list out;
+        for (const ex& T : times) {
+            data_values dt = d;
+            dt.scalars[tsym] = T;
+            out.push_back(at(dt));
+        }
+        return times.size() == 1 ? out[0] : value(out);
+    } catch (const type_error& x) {
+        const std::string m = x.what();
+        if (m.rfind(b.name + ": ", 0) == 0) throw;
+        throw type_error(b.name + ": " + m);
+    }
+}
+
+value builtin_verify(const builtin& b, const args_t& a, context& c) {
+    const auto& P = problem_arg(a, 0, b);
+    if (a[1].is_reduction()) return verify_reduction(b, a, c);
+    const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
+    data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
+    const auto [T, n, opt] = verify_arguments(a, b);
+    const auto t0 = std::chrono::steady_clock::now();
+    // the closed form with the values put in (t stays free)
+    const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
+    d.scalars.erase(P.t);
+    const std::vector<ex> cf = components(put_values_limit(s, d));
+    // the first-order system: state x, x', ..., x^(M-1); x^(M) solved from the equation
+    const first_order_system sys = first_order(P, d, b);
+    const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    num::verify_result v;
+    if (std::any_of(cf.begin(), cf.end(), [](const ex& x) { return num::has_integral(x); })) {
+        // integral objects (int_0^t ... dtau, fixed_axis.h): sampled, each by quadrature
+        const num::sampled_function at = [&](const std::vector<double>& times, double* out) {
+            for (std::size_t k = 0; k < times.size(); ++k)
+                for (std::size_t i = 0; i < cf.size(); ++i)
+                    out[k * cf.size() + i] =
+                        to_double(cf[i].subs(t == GiNaC::numeric(times[k])), b, "the closed form");
+        };
+        num::symbolic_system rhs(sys.rhs, t, sys.state, {});
+        v = num::verify(at, cf.size(), rhs.function(), sys.initial, 0.0, T, std::size_t(n), opt);
+    } else {
+        v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T, std::size_t(n), opt);
+    }
+    static const char* axes[] = {"x", "y", "z"};
+    c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
+            << " (component " << (P.is_vector ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
+            << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
+            << "]; closed form " << seconds(v.closed_form_seconds) << precision_note(v) << ", "
+            << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("
+            << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
+            << "\n";
+    return value(ex(num::from_double(v.max_relative_difference)));
+}
+
+value builtin_relative_motion(const builtin& b, const args_t& a, context&) {
+    const relative_arguments ra = relative_args(a, b);
+    bool several = false;
+    std::vector<mechanics::relative_state> out;
+    for (const double t : times_arg(a, 5, b, several))
+        out.push_back(mechanics::relative_motion_exact(ra.mu, ra.R0, ra.V0, ra.start, t));
+    return relative_states(out, several);
+}
+
+value builtin_clohessy_wiltshire(const builtin& b, const args_t& a, context&) {
+    const double n = to_double(arg_ex(a, 0, b), b, "n");
+    if (!(n > 0)) throw type_error(b.name + ": the mean motion n must be positive");
+    const mechanics::relative_state s{number_vector(a, 1, b, "rho0"), number_vector(a, 2, b, "rho0'")};
+    bool several = false;
+    std::vector<mechanics::relative_state> out;
+    for (const double t : times_arg(a, 3, b, several)) out.push_back(mechanics::clohessy_wiltshire(n, s, t));
+    return relative_states(out, several);
+}
+
+value builtin_tschauner_hempel(const builtin& b, const args_t& a, context&) {
+    const relative_arguments ra = relative_args(a, b);
+    bool several = false;
+    std::vector<double> times = times_arg(a, 5, b, several);
+    std::vector<std::size_t> order(times.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
+    std::vector<double> sorted;
+    for (const std::size_t k : order) sorted.push_back(times[k]);
+    const auto states = mechanics::tschauner_hempel(ra.mu, ra.R0, ra.V0, ra.start, sorted);
+    std::vector<mechanics::relative_state> out(times.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
+    return relative_states(out, several);
+}
+
+value builtin_yamanaka_ankersen(const builtin& b, const args_t& a, context&) {
+    const relative_arguments ra = relative_args(a, b);
+    bool several = false;
+    const std::vector<double> times = times_arg(a, 5, b, several);
+    return relative_states(mechanics::yamanaka_ankersen(ra.mu, ra.R0, ra.V0, ra.start, times), several);
+}
+
 }  // namespace
 
 void register_mechanics_builtins(registry& r) {
-    add(r, "cross", "cross(a, b)", "The cross product a x b (same as the operator x).", "",
-        "vector a, b\ncross(a, b) + cross(b, a)", 2, 2, [](const builtin& b, const args_t& a, context&) {
-            return value(cross(vector_arg(a, 0, b), vector_arg(a, 1, b)));
-        });
-    add(r, "dot", "dot(a, b)", "The scalar product a . b (same as the operator .).", "",
-        "vector a\ndot(a, [1, 0, 0])", 2, 2, [](const builtin& b, const args_t& a, context&) {
-            return value(dot(vector_arg(a, 0, b), vector_arg(a, 1, b)));
-        });
-    add(r, "triple", "triple(a, b, c)", "The scalar triple product [a, b, c] = a . (b x c).", "",
-        "vector a, b, c\ntriple(a, b, c) + triple(b, a, c)", 3, 3, [](const builtin& b, const args_t& a, context&) {
-            return value(triple(vector_arg(a, 0, b), vector_arg(a, 1, b), vector_arg(a, 2, b)));
-        });
-    add(r, "norm", "norm(a)", "The length |a| = sqrt(a . a) of a vector.", "",
-        "vector a\nnorm(a)^2", 1, 1, [](const builtin& b, const args_t& a, context&) {
-            return value(norm(vector_arg(a, 0, b)));
-        });
-    add(r, "skew", "skew(w)",
-        "The skew matrix of w = [w1, w2, w3] (its matrix representation: skew(w) * x = w x x for columns x).",
-        "(VI.1.1-11)", "skew([1, 2, 3]) * matrix([[4], [5], [6]])", 1, 1,
-        [](const builtin& b, const args_t& a, context&) {
-            const ex w = vector_arg(a, 0, b);
-            if (!is_vector_literal(w))
-                throw type_error(b.name + ": argument 1 must be a vector given by its components [w1, w2, w3]");
-            const ex x = w.op(0), y = w.op(1), z = w.op(2);
-            return value(ex(GiNaC::matrix(3, 3, GiNaC::lst{0, -z, y, z, 0, -x, -y, x, 0})));
-        });
-    add(r, "rotation_operator", "rotation_operator(w, t, x)",
-        "exp(-K t) x with K = w x, derived by the algebra layer from the minimal polynomial X^3 + |w|^2 X of K "
-        "(Hermite interpolation, Thm II.2.3): x - sin(|w| t)/|w| w x x + (1 - cos(|w| t))/|w|^2 w x (w x x), "
-        "the solution of x' + w x x = 0 (Rodrigues).",
-        "(VI.1.13-15)", "vector w, x\nrotation_operator(w, t, x)", 3, 3,
-        [](const builtin& b, const args_t& a, context&) {
-            const ex w = vector_arg(a, 0, b), t = arg_ex(a, 1, b), x = vector_arg(a, 2, b);
-            if (w.is_zero()) return value(x);
-            const GiNaC::possymbol W("|w|");
-            const mechanics::rotation_operator_algebra R(W);
-            const element E = R.exp_minus_Kt(t);
-            auto c = [&](std::size_t k) { return E[k].subs(W == norm(w)); };
-            return value(c(0) * x + c(1) * cross(w, x) + c(2) * cross(w, cross(w, x)));
-        });
-    add(r, "F", "F(w, x)",
-        "The rotation operator F_w(x) = R x of the thesis, R' = W R, R(0) = I (W y = w x y): the solution of "
-        "y' = w x y with y(0) = x, so that F(-w, psi) is Q psi of the reduction r = F_(-w)(psi). In closed form "
-        "for a constant w (Rodrigues), a fixed direction w = s(t) u (angle a(t) = |u| int_0^t s, an integral "
-        "object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution "
-        "by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed.",
-        "(VI.2.9-12), (VI.3.118-119)", "vector u, x\nF((1 + sin(t))*u, x)", 2, 2,
-        [](const builtin& b, const args_t& a, context& c) -> value {
-            const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
-            if (w.is_zero() || x.is_zero() || equal(w, 0)) return value(x);
-            try {
-                mechanics::require_value_at_zero(w, t, "w(t)");
-            } catch (const domain_error& e) {
-                throw domain_error(b.name + ": " + e.what());
-            }
-            // F_w = F_(-v) with v = -w, the Q of v (turning_frame.h): closed for a fixed direction
-            // (a constant w too; VI.2.12, the angle an integral object when not elementary) and for
-            // a regular precession
-            mechanics::turning_frame_form F;
-            F.terms.w = -w;
-            if (const auto d = mechanics::fixed_direction(w, t)) {  // -w = s(t) (-u): the angle of w about -u
-                F.u = -d->second;
-                F.angle = mechanics::rotation_angle(d->first, d->second, t, true);
-            } else {
-                F.precessing = mechanics::regular_precession(-w, t);
-            }
-            if (const auto y = mechanics::closed_rotation(F, x, t))  // literals: one literal
-                return value(vector_symbols(*y).empty() ? subs_components(*y, {}) : *y);
-            if (mechanics::depends_on_time(x, t))
-                throw domain_error(b.name + ": w(t) = " + print_ex(w) + " turns, so R has no closed form, and x = " +
-                                   print_ex(x) + " depends on t: F_w(x) is evaluated for a constant x only "
-                                   "(F(w, x0), then eval)");
-            return value(reduction{std::make_shared<const mechanics::reduced_solution>(
-                mechanics::reduced_solution{mechanics::rotation_problem(w, x, t), {}, true})});
-        });
-    add(r, "vector_series", "vector_series(e, w, n)",
-        "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "
-        "eps = 1): the small-rotation approximations of the thesis, derived from the exact solution.",
-        "(VI.1.51-55)", "vector w, g\nvector_series(sin(norm(w)*t)/norm(w)*(w x g), w, 3)", 3, 3,
-        [](const builtin& b, const args_t& a, context&) {
-            const ex& e = arg_ex(a, 0, b);
-            const ex& w = arg_ex(a, 1, b);
-            if (!is_vector_symbol(w))
-                throw type_error(b.name + ": argument 2 must be a vector symbol (usage: " + b.signature + ")");
-            const long n = arg_int(a, 2, b, 0, 60);
-            // |w| and w . w through a positive symbol W, so that |eps w| = eps W
-            const GiNaC::possymbol eps("eps"), W("W");
-            const ex ew = e.subs(norm(w) == W).subs(dot(w, w) == GiNaC::pow(W, 2));
-            const ex es = subs_vectors(ew, {{w, eps * w}}).subs(W == eps * W);
-            const ex ser = GiNaC::series_to_poly(es.series(eps == 0, int(n) + 1));
-            return value(GiNaC::expand(ser.subs(eps == 1)).subs(W == norm(w)));
-        });
-    add(r, "ode", "ode(equation, x(0) = x0, x'(0) = v0, ...)",
-        "A linear Cauchy problem for x(t): the equation (x, x', x'' ... stand for the unknown and its "
-        "derivatives in t) and one initial condition per order. x is a vector when an initial value is. "
-        "The operator part must be a polynomial in one K = w x (terms c x, c w x x, c w x (w x x), "
-        "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. Also the rotating-frame "
-        "form m (r'' + 2 w x r' + w' x r + w x (w x r)) + g(|r|) r + F(t) = 0 with w(t) of fixed direction "
-        "(closed form; F across the axis by integral objects) or turning, and a central field g(|r|) r "
-        "(k r/|r|^3: Kepler) without F (the reduction of Thm VI.3.2.1). A second-order problem without r itself "
-        "(m r'' = q (r' x B(t) + E)) is solved for v = r' and r = r(0) + int_0^t v (VI.2.50-52). The problem is "
-        "checked when it is made.",
-        "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)",
-        "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)", 2, SIZE_MAX,
-        [](const builtin& b, const args_t&, context&) -> value {
-            throw type_error(b.name + ": internal: ode is evaluated by the interpreter");
-        });
-    add(r, "first_integrals", "first_integrals(P)",
-        "The first integrals (Thm VI.2.2.3.3, VI.3.140-141) of a problem in a frame rotating about a fixed axis, "
-        "m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 with w = s(t) u (s constant or not): with "
-        "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. For a "
-        "turning w(t) or a central field g(|r|) r (Thm VI.3.2.2): [m (|p|^2/2 + V(|r|)) (V' = g |r|/m, when "
-        "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0).",
-        "(VI.3.140-141)",
-        "vector u, r0, v0\nw := (1 + sin(t))*u\nfirst_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
-        "4*r = 0, r(0) = r0, r'(0) = v0))",
-        1, 1, [](const builtin& b, const args_t& a, context&) -> value {
-            const auto& P = problem_arg(a, 0, b);
-            if (P.turning) {
-                list out;
-                for (const ex& I : mechanics::first_integrals(P, *P.turning)) out.push_back(value(I));
-                return value(out);
-            }
-            std::string why;
-            const auto fa = P.fixed_axis ? std::optional<mechanics::fixed_axis_form>(*P.fixed_axis)
-                                         : mechanics::read_fixed_axis(P, &why);
-            if (!fa)
-                throw domain_error(b.name + ": the problem is not m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 "
-                                   "with w = s(t) u" + (why.empty() ? std::string() : " (" + why + ")"));
-            list out;
-            for (const ex& I : mechanics::first_integrals(P, *fa)) out.push_back(value(I));
-            return value(out);
-        });
-    add(r, "check", "check(P, s [, values])",
-        "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "
-        "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md; with "
-        "floating-point values, 0 up to rounding: at most 10^(5 - Digits) times the largest term, and said); "
-        "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
-        "values put in: the check of a scene's solution solve(P, values). Integral objects in s are "
-        "differentiated and merged over the same range before the zero test. A solution by reduction (VI.3) "
-        "is not a closed form: refused, use verify.",
-        "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, [](const builtin& b, const args_t& a, context& c) {
-            const auto& P0 = problem_arg(a, 0, b);
-            if (a[1].is_reduction())
-                throw domain_error(b.name + ": the solution is the reduction " + P0.name +
-                                   " = F_(-w)(psi) (Thm VI.3.2.1, proved once for all w in the tests), not a closed "
-                                   "form in t: compare it with the equation numerically, verify(P, s, values, T)");
-            const mechanics::parameter_values vals =
-                a.size() == 3 ? scene_values(a, 2, b) : mechanics::parameter_values{};
-            const mechanics::cauchy_problem P = a.size() == 3 ? mechanics::with_values(P0, vals) : P0;
-            // the values go into s too (a general solution checked for the scene's values)
-            const ex s0 = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
-            const ex s = a.size() == 3 ? mechanics::put_values(s0, vals) : s0;
-            const mechanics::solution_check k = mechanics::check(P, s);
-            // a vector as the language writes it: one literal [x, y, z] when no vector symbol is left
-            auto shown = [&](const ex& x) {
-                if (P.is_vector && is_vector(x) && vector_symbols(x).empty())
-                    return print_ex(subs_components(x, {}));
-                return print_ex(x);
-            };
-            if (!k) {
-                // false only when shown: a residual or difference that is neither proved 0 nor
-                // seen nonzero at a point is undecided (scalar/equality.h), never reported as false
-                std::vector<std::pair<std::string, ex>> open;
-                bool some_no = k.residual_seen_nonzero;
-                if (!k.residual_zero && !k.residual_seen_nonzero) open.push_back({"the residual", k.residual});
-                for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
-                    if (!k.initial_differences[m].is_zero())
-                        open.push_back({P.unknown_name(m) + "(0) minus its value", k.initial_differences[m]});
-                std::string undecided;
-                for (const auto& [what, x] : open) {
-                    const zero_decision z = P.is_vector ? decide_zero_vector(x) : decide_zero(x);
-                    // a point value of an integral object is a quadrature's, not exact: with one,
-                    // a residual not proved 0 stays undecided
-                    if (z.is_zero == truth::no && !num::has_integral(x)) some_no = true;
-                    if ((z.is_zero != truth::no || num::has_integral(x)) && undecided.empty())
-                        undecided = what + " " + shown(x);
-                }
-                if (!some_no && !undecided.empty())
-                    throw domain_error(b.name + ": cannot decide whether " + undecided +
-                                       " is 0 (the zero test does not prove it, and no point was found where it "
-                                       "is not 0)");
-            }
-            if (!k.residual_zero) c.out() << "check: the residual is " << shown(k.residual) << ", not 0\n";
-            if (k && k.rounding > 0) {
-                std::ostringstream ratio;  // not on c.out(): its precision stays as it is
-                ratio << std::setprecision(2) << k.rounding;
-                c.out() << "check: 0 up to rounding (floating-point values): what remains is at most " << ratio.str()
-                        << " times the largest term\n";
-            }
-            for (std::size_t m = 0; m < k.initial_differences.size(); ++m)
-                if (!k.initial_differences[m].is_zero())
-                    c.out() << "check: " << P.unknown_name(m) << "(0) differs from its value by "
-                            << shown(k.initial_differences[m]) << "\n";
-            return value(bool(k));
-        });
-    add(r, "model", "model(P, values)",
-        "The smallest exact model of the scene (P made by ode(...), values as for eval): how each data "
-        "vector relates to the operator K = w x (0, along w, perpendicular to w, general) and the algebra "
-        "R[X]/(m_P) of its local minimal polynomial, the terms that vanish for the values, the scene's "
-        "algebra (the lcm of the m_P), and the method with its reason; the report solve(P, values) prints, "
-        "as a string, without solving.",
-        "(II.1.23-24), (VI.1.12-15)",
-        "vector w, g, r0, v0\nmodel(ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0), [w = [0, 0, 1], g = [0, 0, -10]])",
-        2, 2, [](const builtin& b, const args_t& a, context&) {
-            return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
-        });
-    add(r, "eval", "eval(e, values, t = T)",
-        "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
-        "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
-        "number or a list of numbers (a time written as a decimal, 1e300, is that decimal number exactly). Returns a number or a list of components (a list of those for "
-        "several times). Where the values make the closed form divide by zero (w = [0, 0, 0] in sin(|w| t)/|w|, "
-        "a double root c^2 = 4 k, a resonance w0 = 2, also given as the float 2.0), the exact limit is taken "
-        "as the values approach those given (along lines through the point from both sides, accepted where "
-        "all agree and, with several values moving, proved through the one quantity that vanishes; "
-        "docs/numeric.md); where it is not established (a pole, a limit that depends on the "
-        "direction or on the curve of approach) eval names the denominator that vanishes and why, and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
-        "result is evaluated with as many digits as its proved error bound needs to be correct to double precision "
-        "(no loss where the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12 or 1e-300, or at long "
-        "phases; where 2560 digits do not suffice, an error says so). Integral objects "
-        "(int_0^t f dtau, nested ones too) are evaluated by quadrature on Chebyshev panels, to a few ulps of their scale, "
-        "refused with the error estimate where it does not converge (docs/numeric.md). e may be a solution by reduction s "
-        "(VI.3) or its derivative s': r or r' at the times (t >= 0), numerically (Q by Magnus on SO(3)).",
-        "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)", 2, 3,
-        [](const builtin& b, const args_t& a, context&) -> value {
-            if (a[0].is_reduction()) {  // r = F_(-w)(psi) (or r') at the given times, numerically
-                const reduction& red = a[0].as_reduction();
-                if (a.size() != 3)
-                    throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
-                const ex& tr = arg_ex(a, 2, b);
-                if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(red.solution->problem->t))
-                    throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
-                std::vector<double> times;
-                const ex T = tr.rhs();
-                for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
-                    times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
-                const auto x = reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
-                if (x.size() == 1 && !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T)) return triple_value(x[0]);
-                list out;
-                for (const auto& v : x) out.push_back(triple_value(v));
-                return value(out);
-            }
-            // floats taken as the exact numbers they are, so that nothing is rounded before
-            // to_double's precision-controlled evaluation (cancellation, long phases)
-            const ex e = num::exact_floats_of(arg_ex(a, 0, b));
-            const data_values d = exact_values(read_values(a[1], b, 1));
-            std::vector<ex> times;
-            ex tsym;
-            if (a.size() == 3) {
-                const ex& tr = arg_ex(a, 2, b);
-                if (!GiNaC::is_a<GiNaC::relational>(tr) || !GiNaC::is_a<GiNaC::symbol>(tr.lhs()))
-                    throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
-                tsym = tr.lhs();
-                const ex T = tr.rhs();
-                if (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T))  // t = [T1, T2, ...]
-                    for (std::size_t i = 0; i < T.nops(); ++i) times.push_back(num::decimal_floats_of(T.op(i)));
-                else
-                    times.push_back(num::decimal_floats_of(T));  // t = 1e300 is 10^300 (a long phase shows the difference)
-            }
-            if (a.size() == 3 && a[2].is_ex() && times.empty())
-                throw type_error(b.name + ": no time given");
-            // the symbols of e other than t are constants: a value that depends on t would
-            // evaluate a frozen solution of a different problem without a word (refused)
-            if (!times.empty())
-                for (const auto& [k, x] : d.scalars)
-                        if (x.has(tsym))
-                            throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
-                                               print_ex(tsym) + ": the values are constants (the expression is "
-                                               "evaluated at " + print_ex(tsym) + " = T)");
-            if (!times.empty())
-                for (const auto& [k, x] : d.vectors)
-                    if (x.has(tsym))
-                        throw domain_error(b.name + ": the value of " + print_ex(k) + " depends on " +
-                                           print_ex(tsym) + ": the values are constants (the expression is "
-                                           "evaluated at " + print_ex(tsym) + " = T)");
-            // e at the values: where they make it divide by zero, its limit as the values approach
-            // them (put_values_limit); where that is not established, the denominator named and
-            // solve(P, values) proposed (it derives the solution of that scene)
-            auto at = [&](const data_values& dv) -> value {
-                try {
-                    return numbers(put_values_limit(e, dv, tsym), b);
-                } catch (const domain_error& x) {
-                    const std::string m = x.what();
-                    if (m.rfind(singular_values_message, 0) != 0) throw;
-                    throw domain_error(b.name + ": " + m + "; for a solution of a problem P, solve(P, values) "
-                                       "derives the solution of this scene");
-                }
-            };
-            try {
-                if (times.empty()) return at(d);
-                list out;
-                for (const ex& T : times) {
-                    data_values dt = d;
-                    dt.scalars[tsym] = T;
-                    out.push_back(at(dt));
-                }
-                return times.size() == 1 ? out[0] : value(out);
-            } catch (const type_error& x) {
-                const std::string m = x.what();
-                if (m.rfind(b.name + ": ", 0) == 0) throw;
-                throw type_error(b.name + ": " + m);
-            }
-        });
-    add(r, "verify", "verify(P, s, values, T [, n [, stepper]])",
-        "Compares the closed form s of the problem P with a numerical integration of P itself "
-        "(Boost.Odeint, from P's own initial values) on [0, T] at n sample times (default 200): prints "
-        "the largest relative difference (per component, relative to that component's largest value), "
-        "where it occurs, and the time each method took; returns the largest relative difference. "
-        "stepper: \"rkf78\" (default, controlled Runge-Kutta-Fehlberg 7(8)), \"bulirsch_stoer\", "
-        "\"dopri5\"; tolerances 1e-12 absolute and relative. For a solution by reduction (VI.3) r and r' "
-        "are compared (six components).",
-        "", "vector r0\nverify(ode(r'' + 4*r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)", 4, 6,
-        [](const builtin& b, const args_t& a, context& c) -> value {
-            const auto& P = problem_arg(a, 0, b);
-            if (a[1].is_reduction()) return verify_reduction(b, a, c);
-            const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
-            data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
-            const double T = to_double(arg_ex(a, 3, b), b, "the end time T");
-            if (!(T > 0) || !std::isfinite(T)) throw type_error(b.name + ": the end time T must be positive");
-            const long n = a.size() > 4 ? arg_int(a, 4, b, 2, 10000000) : 200;
-            num::integration_options opt;
-            opt.abs_tol = opt.rel_tol = 1e-12;
-            if (a.size() > 5) opt.stepper = num::stepper_from_name(arg_string(a, 5, b));
-            if (opt.stepper == num::stepper_kind::rk4)
-                throw type_error(b.name + ": rk4 has no error control; use rkf78, bulirsch_stoer or dopri5");
-            const auto t0 = std::chrono::steady_clock::now();
-            // the closed form with the values put in (t stays free)
-            const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
-            d.scalars.erase(P.t);
-            const std::vector<ex> cf = components(put_values_limit(s, d));
-            // the first-order system: state x, x', ..., x^(M-1); x^(M) solved from the equation
-            const first_order_system sys = first_order(P, d, b);
-            const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            num::verify_result v;
-            if (std::any_of(cf.begin(), cf.end(), [](const ex& x) { return num::has_integral(x); })) {
-                // integral objects (int_0^t ... dtau, fixed_axis.h): sampled, each by quadrature
-                const num::sampled_function at = [&](const std::vector<double>& times, double* out) {
-                    for (std::size_t k = 0; k < times.size(); ++k)
-                        for (std::size_t i = 0; i < cf.size(); ++i)
-                            out[k * cf.size() + i] =
-                                to_double(cf[i].subs(t == GiNaC::numeric(times[k])), b, "the closed form");
-                };
-                num::symbolic_system rhs(sys.rhs, t, sys.state, {});
-                v = num::verify(at, cf.size(), rhs.function(), sys.initial, 0.0, T, std::size_t(n), opt);
-            } else {
-                v = num::verify(cf, t, sys.rhs, sys.state, sys.initial, {}, 0.0, T, std::size_t(n), opt);
-            }
-            static const char* axes[] = {"x", "y", "z"};
-            c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
-                    << " (component " << (P.is_vector ? axes[v.component_of_max] : P.name.c_str()) << ", t = "
-                    << std::setprecision(6) << v.time_of_max << ") over " << v.n_points << " points in [0, " << T
-                    << "]; closed form " << seconds(v.closed_form_seconds) << precision_note(v) << ", "
-                    << num::stepper_name(opt.stepper) << " " << seconds(v.integration_seconds) << " ("
-                    << v.rhs_evaluations << " right-hand sides), setup " << seconds(prep + v.compile_seconds)
-                    << "\n";
-            return value(ex(num::from_double(v.max_relative_difference)));
-        });
-    add(r, "relative_motion", "relative_motion(mu, R0, V0, rho0, rho0', t = T)",
-        "Exact relative orbital motion: a chaser seen from the LVLH frame (x radial, y along the track, z "
-        "normal) of a target on a Keplerian orbit (R0, V0 inertial, gravitational parameter mu), starting at rho0 "
-        "with relative velocity rho0' (LVLH components). The frame turns with w = |h|/|R|^2 about the orbit "
-        "normal; undone as in Thm VI.3.2.1 the motion is the difference of two Kepler orbits (universal "
-        "variables), any eccentricity, no linearization. Returns [rho, rho'] at T (a list of them for a list of "
-        "times).",
-        "(VI.3.132-138)", "relative_motion(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], t = 600)",
-        6, 6, [](const builtin& b, const args_t& a, context&) -> value {
-            const relative_arguments ra = relative_args(a, b);
-            bool several = false;
-            std::vector<mechanics::relative_state> out;
-            for (const double t : times_arg(a, 5, b, several))
-                out.push_back(mechanics::relative_motion_exact(ra.mu, ra.R0, ra.V0, ra.start, t));
-            return relative_states(out, several);
-        });
-    add(r, "clohessy_wiltshire", "clohessy_wiltshire(n, rho0, rho0', t = T)",
-        "The Clohessy-Wiltshire solution: the relative motion linearized about a circular target orbit of mean "
-        "motion n (LVLH components as for relative_motion), the first-order limit of the exact motion in the "
-        "separation. Returns [rho, rho'] at T (a list of them for a list of times).",
-        "", "clohessy_wiltshire(0.00108, [0.1, 0, 0], [0, 0, 0], t = 600)", 4, 4,
-        [](const builtin& b, const args_t& a, context&) -> value {
-            const double n = to_double(arg_ex(a, 0, b), b, "n");
-            if (!(n > 0)) throw type_error(b.name + ": the mean motion n must be positive");
-            const mechanics::relative_state s{number_vector(a, 1, b, "rho0"), number_vector(a, 2, b, "rho0'")};
-            bool several = false;
-            std::vector<mechanics::relative_state> out;
-            for (const double t : times_arg(a, 3, b, several)) out.push_back(mechanics::clohessy_wiltshire(n, s, t));
-            return relative_states(out, several);
-        });
-    add(r, "tschauner_hempel", "tschauner_hempel(mu, R0, V0, rho0, rho0', t = T)",
-        "The linear model of the relative motion about an elliptic target orbit (Tschauner-Hempel): the LVLH "
-        "equation linearized in rho, rho'' + 2 w x rho' + w' x rho + w x (w x rho) + (mu/|R|^3)(rho - 3 (rho . x) x) "
-        "= 0, integrated with the target's orbit (Boost.Odeint rkf78 at 1e-13). Arguments and result as for "
-        "relative_motion.",
-        "", "tschauner_hempel(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
-        [](const builtin& b, const args_t& a, context&) -> value {
-            const relative_arguments ra = relative_args(a, b);
-            bool several = false;
-            std::vector<double> times = times_arg(a, 5, b, several);
-            std::vector<std::size_t> order(times.size());
-            for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-            std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
-            std::vector<double> sorted;
-            for (const std::size_t k : order) sorted.push_back(times[k]);
-            const auto states = mechanics::tschauner_hempel(ra.mu, ra.R0, ra.V0, ra.start, sorted);
-            std::vector<mechanics::relative_state> out(times.size());
-            for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
-            return relative_states(out, several);
-        });
-    add(r, "yamanaka_ankersen", "yamanaka_ankersen(mu, R0, V0, rho0, rho0', t = T)",
-        "The same linear model as tschauner_hempel in closed form (Yamanaka-Ankersen), derived from the "
-        "Tschauner-Hempel equations in the true anomaly: x~ = rho x, solutions rho sin, rho cos, 2 - 3 e s J with "
-        "J = k^2 t (mechanics/relative_motion.h); any eccentricity, no integration. Arguments and result as for "
-        "relative_motion.",
-        "", "yamanaka_ankersen(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)", 6, 6,
-        [](const builtin& b, const args_t& a, context&) -> value {
-            const relative_arguments ra = relative_args(a, b);
-            bool several = false;
-            const std::vector<double> times = times_arg(a, 5, b, several);
-            return relative_states(mechanics::yamanaka_ankersen(ra.mu, ra.R0, ra.V0, ra.start, times), several);
-        });
+    add_builtins(r, section, {
+        {"cross", "cross(a, b)",
+         "The cross product a x b (same as the operator x).",
+         "", "vector a, b\ncross(a, b) + cross(b, a)", 2, 2, builtin_cross},
+        {"dot", "dot(a, b)",
+         "The scalar product a . b (same as the operator .).",
+         "", "vector a\ndot(a, [1, 0, 0])", 2, 2, builtin_dot},
+        {"triple", "triple(a, b, c)",
+         "The scalar triple product [a, b, c] = a . (b x c).",
+         "", "vector a, b, c\ntriple(a, b, c) + triple(b, a, c)", 3, 3, builtin_triple},
+        {"norm", "norm(a)",
+         "The length |a| = sqrt(a . a) of a vector.",
+         "", "vector a\nnorm(a)^2", 1, 1, builtin_norm},
+        {"skew", "skew(w)",
+         "The skew matrix of w = [w1, w2, w3] (its matrix representation: skew(w) * x = w x x for columns x).",
+         "(VI.1.1-11)", "skew([1, 2, 3]) * matrix([[4], [5], [6]])", 1, 1, builtin_skew},
+        {"rotation_operator", "rotation_operator(w, t, x)",
+         "exp(-K t) x with K = w x, derived by the algebra layer from the minimal polynomial X^3 + |w|^2 X of K "
+         "(Hermite interpolation, Thm II.2.3): x - sin(|w| t)/|w| w x x + (1 - cos(|w| t))/|w|^2 w x (w x x), "
+         "the solution of x' + w x x = 0 (Rodrigues).",
+         "(VI.1.13-15)", "vector w, x\nrotation_operator(w, t, x)", 3, 3, builtin_rotation_operator},
+        {"F", "F(w, x)",
+         "The rotation operator F_w(x) = R x of the thesis, R' = W R, R(0) = I (W y = w x y): the solution of "
+         "y' = w x y with y(0) = x, so that F(-w, psi) is Q psi of the reduction r = F_(-w)(psi). In closed form "
+         "for a constant w (Rodrigues), a fixed direction w = s(t) u (angle a(t) = |u| int_0^t s, an integral "
+         "object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution "
+         "by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed.",
+         "(VI.2.9-12), (VI.3.118-119)", "vector u, x\nF((1 + sin(t))*u, x)", 2, 2, builtin_F},
+        {"vector_series", "vector_series(e, w, n)",
+         "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "
+         "eps = 1): the small-rotation approximations of the thesis, derived from the exact solution.",
+         "(VI.1.51-55)", "vector w, g\nvector_series(sin(norm(w)*t)/norm(w)*(w x g), w, 3)",
+         3, 3, builtin_vector_series},
+        {"ode", "ode(equation, x(0) = x0, x'(0) = v0, ...)",
+         "A linear Cauchy problem for x(t): the equation (x, x', x'' ... stand for the unknown and its "
+         "derivatives in t) and one initial condition per order. x is a vector when an initial value is. "
+         "The operator part must be a polynomial in one K = w x (terms c x, c w x x, c w x (w x x), "
+         "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. Also the rotating-frame "
+         "form m (r'' + 2 w x r' + w' x r + w x (w x r)) + g(|r|) r + F(t) = 0 with w(t) of fixed direction "
+         "(closed form; F across the axis by integral objects) or turning, and a central field g(|r|) r "
+         "(k r/|r|^3: Kepler) without F (the reduction of Thm VI.3.2.1). A second-order problem without r itself "
+         "(m r'' = q (r' x B(t) + E)) is solved for v = r' and r = r(0) + int_0^t v (VI.2.50-52). The problem is "
+         "checked when it is made.",
+         "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)", "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)",
+         2, any_number, builtin_ode},
+        {"first_integrals", "first_integrals(P)",
+         "The first integrals (Thm VI.2.2.3.3, VI.3.140-141) of a problem in a frame rotating about a fixed axis, "
+         "m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 with w = s(t) u (s constant or not): with "
+         "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. For a "
+         "turning w(t) or a central field g(|r|) r (Thm VI.3.2.2): [m (|p|^2/2 + V(|r|)) (V' = g |r|/m, when "
+         "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0).",
+         "(VI.3.140-141)", "vector u, r0, v0\nw := (1 + sin(t))*u\nfirst_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
+         "4*r = 0, r(0) = r0, r'(0) = v0))", 1, 1, builtin_first_integrals},
+        {"check", "check(P, s [, values])",
+         "Substitutes s into the problem P made by ode(...): true when the residual of the equation and "
+         "every initial difference are exactly 0 (vectors compared by components, see docs/vectors.md; with "
+         "floating-point values, 0 up to rounding: at most 10^(5 - Digits) times the largest term, and said); "
+         "otherwise prints what is not 0 and returns false. With values (as for eval), P is taken with the "
+         "values put in: the check of a scene's solution solve(P, values). Integral objects in s are "
+         "differentiated and merged over the same range before the zero test. A solution by reduction (VI.3) "
+         "is not a closed form: refused, use verify.",
+         "", "vector r0\ncheck(ode(r' = 0, r(0) = r0), r0)", 2, 3, builtin_check},
+        {"model", "model(P, values)",
+         "The smallest exact model of the scene (P made by ode(...), values as for eval): how each data "
+         "vector relates to the operator K = w x (0, along w, perpendicular to w, general) and the algebra "
+         "R[X]/(m_P) of its local minimal polynomial, the terms that vanish for the values, the scene's "
+         "algebra (the lcm of the m_P), and the method with its reason; the report solve(P, values) prints, "
+         "as a string, without solving.",
+         "(II.1.23-24), (VI.1.12-15)", "vector w, g, r0, v0\nmodel(ode(r'' + 2*w x r' = g, r(0) = r0, r'(0) = v0), [w = [0, 0, 1], g = [0, 0, -10]])",
+         2, 2, builtin_model},
+        {"eval", "eval(e, values, t = T)",
+         "Evaluates e (a scalar or vector expression, e.g. a solution) at the given values and time(s): "
+         "values is a list of name = value (vectors as [x, y, z]; a value may use other values); T a "
+         "number or a list of numbers (a time written as a decimal, 1e300, is that decimal number exactly). Returns a number or a list of components (a list of those for "
+         "several times). Where the values make the closed form divide by zero (w = [0, 0, 0] in sin(|w| t)/|w|, "
+         "a double root c^2 = 4 k, a resonance w0 = 2, also given as the float 2.0), the exact limit is taken "
+         "as the values approach those given (along lines through the point from both sides, accepted where "
+         "all agree and, with several values moving, proved through the one quantity that vanishes; "
+         "docs/numeric.md); where it is not established (a pole, a limit that depends on the "
+         "direction or on the curve of approach) eval names the denominator that vanishes and why, and proposes solve(P, values), the solution of that scene. Numbers in e and values are taken as the exact numbers they denote and the "
+         "result is evaluated with as many digits as its proved error bound needs to be correct to double precision "
+         "(no loss where the closed form cancels, e.g. (1 - cos(w t))/w^2 at w t = 1e-12 or 1e-300, or at long "
+         "phases; where 2560 digits do not suffice, an error says so). Integral objects "
+         "(int_0^t f dtau, nested ones too) are evaluated by quadrature on Chebyshev panels, to a few ulps of their scale, "
+         "refused with the error estimate where it does not converge (docs/numeric.md). e may be a solution by reduction s "
+         "(VI.3) or its derivative s': r or r' at the times (t >= 0), numerically (Q by Magnus on SO(3)).",
+         "", "vector w, r0\ns := r0 + t*(w x r0)\neval(s, [w = [0, 0, 1], r0 = [1, 0, 0]], t = 2)",
+         2, 3, builtin_eval},
+        {"verify", "verify(P, s, values, T [, n [, stepper]])",
+         "Compares the closed form s of the problem P with a numerical integration of P itself "
+         "(Boost.Odeint, from P's own initial values) on [0, T] at n sample times (default 200): prints "
+         "the largest relative difference (per component, relative to that component's largest value), "
+         "where it occurs, and the time each method took; returns the largest relative difference. "
+         "stepper: \"rkf78\" (default, controlled Runge-Kutta-Fehlberg 7(8)), \"bulirsch_stoer\", "
+         "\"dopri5\"; tolerances 1e-12 absolute and relative. For a solution by reduction (VI.3) r and r' "
+         "are compared (six components).",
+         "", "vector r0\nverify(ode(r'' + 4*r = 0, r(0) = r0, r'(0) = 0), cos(2*t)*r0, [r0 = [1, 2, 3]], 10)",
+         4, 6, builtin_verify},
+        {"relative_motion", "relative_motion(mu, R0, V0, rho0, rho0', t = T)",
+         "Exact relative orbital motion: a chaser seen from the LVLH frame (x radial, y along the track, z "
+         "normal) of a target on a Keplerian orbit (R0, V0 inertial, gravitational parameter mu), starting at rho0 "
+         "with relative velocity rho0' (LVLH components). The frame turns with w = |h|/|R|^2 about the orbit "
+         "normal; undone as in Thm VI.3.2.1 the motion is the difference of two Kepler orbits (universal "
+         "variables), any eccentricity, no linearization. Returns [rho, rho'] at T (a list of them for a list of "
+         "times).",
+         "(VI.3.132-138)", "relative_motion(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], t = 600)",
+         6, 6, builtin_relative_motion},
+        {"clohessy_wiltshire", "clohessy_wiltshire(n, rho0, rho0', t = T)",
+         "The Clohessy-Wiltshire solution: the relative motion linearized about a circular target orbit of mean "
+         "motion n (LVLH components as for relative_motion), the first-order limit of the exact motion in the "
+         "separation. Returns [rho, rho'] at T (a list of them for a list of times).",
+         "", "clohessy_wiltshire(0.00108, [0.1, 0, 0], [0, 0, 0], t = 600)", 4, 4, builtin_clohessy_wiltshire},
+        {"tschauner_hempel", "tschauner_hempel(mu, R0, V0, rho0, rho0', t = T)",
+         "The linear model of the relative motion about an elliptic target orbit (Tschauner-Hempel): the LVLH "
+         "equation linearized in rho, rho'' + 2 w x rho' + w' x rho + w x (w x rho) + (mu/|R|^3)(rho - 3 (rho . x) x) "
+         "= 0, integrated with the target's orbit (Boost.Odeint rkf78 at 1e-13). Arguments and result as for "
+         "relative_motion.",
+         "", "tschauner_hempel(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)",
+         6, 6, builtin_tschauner_hempel},
+        {"yamanaka_ankersen", "yamanaka_ankersen(mu, R0, V0, rho0, rho0', t = T)",
+         "The same linear model as tschauner_hempel in closed form (Yamanaka-Ankersen), derived from the "
+         "Tschauner-Hempel equations in the true anomaly: x~ = rho x, solutions rho sin, rho cos, 2 - 3 e s J with "
+         "J = k^2 t (mechanics/relative_motion.h); any eccentricity, no integration. Arguments and result as for "
+         "relative_motion.",
+         "", "yamanaka_ankersen(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)",
+         6, 6, builtin_yamanaka_ankersen},
+    });
 }
 
 }  // namespace symrep::lang

@@ -53,73 +53,80 @@ std::vector<ex> code_operands(const value& v, const builtin& b, bool& is_vec) {
     return {v.as_ex()};
 }
 
+value builtin_latex(const builtin&, const std::vector<value>& args, context&) {
+    return value(latex_value(args[0]));
+}
+
+/// ccode/pycode: the code of an expression, or of the entries of a list or vector literal
+/// between `open` and `close`, separated by commas.
+value code_of(const builtin& b, const value& v, std::string (*code)(const ex&), const char* open, const char* close) {
+    bool vec = false;
+    const std::vector<ex> es = code_operands(v, b, vec);
+    if (!vec) return value(code(es[0]));
+    std::string s = open;
+    for (std::size_t i = 0; i < es.size(); ++i) s += (i ? ", " : "") + code(es[i]);
+    return value(s + close);
+}
+
+value builtin_ccode(const builtin& b, const std::vector<value>& args, context&) {
+    return code_of(b, args[0], c_code, "{", "}");
+}
+
+value builtin_pycode(const builtin& b, const std::vector<value>& args, context&) {
+    return code_of(b, args[0], python_code, "numpy.array([", "])");
+}
+
+value builtin_digits(const builtin& b, const std::vector<value>& args, context&) {
+    const long old = GiNaC::Digits;
+    if (!args.empty()) GiNaC::Digits = arg_int(args, 0, b, 1, 100000);
+    return value(ex(numeric(old)));
+}
+
+value builtin_notation(const builtin& b, const std::vector<value>& args, context&) {
+    const auto name = [](notation n) { return n == notation::unicode ? "unicode" : "ascii"; };
+    const notation old = vector_notation();
+    if (!args.empty()) {
+        const std::string& n = arg_string(args, 0, b);
+        if (n == "unicode") set_vector_notation(notation::unicode);
+        else if (n == "ascii") set_vector_notation(notation::ascii);
+        else
+            throw domain_error(b.name + ": the notation is \"unicode\" or \"ascii\", not \"" + n +
+                               "\"");
+    }
+    return value(std::string(name(old)));
+}
+
 }  // namespace
 
 void register_output_builtins(registry& r) {
-    const char* sec = "Output";
-    add_builtin(r, sec, "latex", "latex(e)",
-                "LaTeX of a value as a string: sums in the canonical term order, vectors bold "
-                "(\\boldsymbol{r}_0), cross and dot products as \\times and \\cdot, norms \\|w\\|, elements as sums "
-                "of coefficient times basis names. print(latex(e)) shows it without quotes.",
-                "", "print(latex(x^2/2 + sqrt(y)))", 1, 1,
-                [](const builtin&, const std::vector<value>& args, context&) -> value {
-                    return value(latex_value(args[0]));
-                });
-    add_builtin(r, sec, "ccode", "ccode(e)",
-                "C/C++ code (double arithmetic, <math.h> functions, M_PI) of a scalar expression, as a string; "
-                "a list or vector literal gives a brace initializer {c0, c1, c2}. Abstract vectors must be given "
-                "components first (subs(e, w = [w1, w2, w3])).",
-                "", "print(ccode(sin(x)^2 + x/3))", 1, 1,
-                [](const builtin& b, const std::vector<value>& args, context&) -> value {
-                    bool vec = false;
-                    const std::vector<ex> es = code_operands(args[0], b, vec);
-                    if (!vec) return value(c_code(es[0]));
-                    std::string s = "{";
-                    for (std::size_t i = 0; i < es.size(); ++i) s += (i ? ", " : "") + c_code(es[i]);
-                    return value(s + "}");
-                });
-    add_builtin(r, sec, "pycode", "pycode(e)",
-                "Python code (NumPy: numpy.sin, numpy.pi, ...) of a scalar expression, as a string; a list or "
-                "vector literal gives numpy.array([c0, c1, c2]). Abstract vectors must be given components first.",
-                "", "print(pycode(sin(x)^2 + x/3))", 1, 1,
-                [](const builtin& b, const std::vector<value>& args, context&) -> value {
-                    bool vec = false;
-                    const std::vector<ex> es = code_operands(args[0], b, vec);
-                    if (!vec) return value(python_code(es[0]));
-                    std::string s = "numpy.array([";
-                    for (std::size_t i = 0; i < es.size(); ++i) s += (i ? ", " : "") + python_code(es[i]);
-                    return value(s + "])");
-                });
-    add_builtin(r, sec, "digits", "digits(n)",
-                "Sets the number of decimal digits of floats (evalf, float literals, their printing) and returns "
-                "the previous setting; digits() returns the current one. Exact rationals stay exact. "
-                "Digits := n does the same.",
-                "", "old := digits(30); evalf(pi); digits(old)", 0, 1,
-                [](const builtin& b, const std::vector<value>& args, context&) -> value {
-                    const long old = GiNaC::Digits;
-                    if (!args.empty()) GiNaC::Digits = arg_int(args, 0, b, 1, 100000);
-                    return value(ex(numeric(old)));
-                });
-    add_builtin(r, sec, "notation", "notation(\"unicode\" | \"ascii\")",
-                "Sets how cross and scalar products of vectors print, for the rest of the session, and returns "
-                "the previous setting: \"ascii\" writes w x r and w . r, \"unicode\" writes w \u00d7 r and "
-                "w \u00b7 r (U+00D7, U+00B7; the language reads both notations). notation() returns the current one (the symrep program "
-                "starts in unicode at an interactive prompt in a UTF-8 locale, in ascii otherwise; --unicode and "
-                "--ascii choose).",
-                "", "vector w, r; old := notation(\"unicode\"); w x (w x r); notation(old)", 0, 1,
-                [](const builtin& b, const std::vector<value>& args, context&) -> value {
-                    const auto name = [](notation n) { return n == notation::unicode ? "unicode" : "ascii"; };
-                    const notation old = vector_notation();
-                    if (!args.empty()) {
-                        const std::string& n = arg_string(args, 0, b);
-                        if (n == "unicode") set_vector_notation(notation::unicode);
-                        else if (n == "ascii") set_vector_notation(notation::ascii);
-                        else
-                            throw domain_error(b.name + ": the notation is \"unicode\" or \"ascii\", not \"" + n +
-                                               "\"");
-                    }
-                    return value(std::string(name(old)));
-                });
+    add_builtins(r, "Output", {
+        {"latex", "latex(e)",
+         "LaTeX of a value as a string: sums in the canonical term order, vectors bold "
+         "(\\boldsymbol{r}_0), cross and dot products as \\times and \\cdot, norms \\|w\\|, elements as sums "
+         "of coefficient times basis names. print(latex(e)) shows it without quotes.",
+         "", "print(latex(x^2/2 + sqrt(y)))", 1, 1, builtin_latex},
+        {"ccode", "ccode(e)",
+         "C/C++ code (double arithmetic, <math.h> functions, M_PI) of a scalar expression, as a string; "
+         "a list or vector literal gives a brace initializer {c0, c1, c2}. Abstract vectors must be given "
+         "components first (subs(e, w = [w1, w2, w3])).",
+         "", "print(ccode(sin(x)^2 + x/3))", 1, 1, builtin_ccode},
+        {"pycode", "pycode(e)",
+         "Python code (NumPy: numpy.sin, numpy.pi, ...) of a scalar expression, as a string; a list or "
+         "vector literal gives numpy.array([c0, c1, c2]). Abstract vectors must be given components first.",
+         "", "print(pycode(sin(x)^2 + x/3))", 1, 1, builtin_pycode},
+        {"digits", "digits(n)",
+         "Sets the number of decimal digits of floats (evalf, float literals, their printing) and returns "
+         "the previous setting; digits() returns the current one. Exact rationals stay exact. "
+         "Digits := n does the same.",
+         "", "old := digits(30); evalf(pi); digits(old)", 0, 1, builtin_digits},
+        {"notation", "notation(\"unicode\" | \"ascii\")",
+         "Sets how cross and scalar products of vectors print, for the rest of the session, and returns "
+         "the previous setting: \"ascii\" writes w x r and w . r, \"unicode\" writes w \u00d7 r and "
+         "w \u00b7 r (U+00D7, U+00B7; the language reads both notations). notation() returns the current one (the symrep program "
+         "starts in unicode at an interactive prompt in a UTF-8 locale, in ascii otherwise; --unicode and "
+         "--ascii choose).",
+         "", "vector w, r; old := notation(\"unicode\"); w x (w x r); notation(old)", 0, 1, builtin_notation},
+    });
 }
 
 }  // namespace symrep::lang

@@ -145,97 +145,107 @@ value space_curve(const builtin& b, const args_t& a, context& c, bool derivative
     return value();
 }
 
+value builtin_plot(const builtin& b, const args_t& a, context& c) {
+    std::vector<ex> es;
+    output::plot_spec spec;
+    if (a[0].is_list()) {
+        // an entry that is a list of [x, y] pairs is a set of points (a table)
+        for (const value& v : a[0].as_list()) {
+            if (!v.is_list()) {
+                if (!v.is_ex()) throw type_error(b.name + ": a curve must be an expression or a list of [x, y] points");
+                es.push_back(v.as_ex());
+                continue;
+            }
+            output::plot_spec::point_set ps;
+            ps.name = "points";
+            for (const value& pt : v.as_list()) {
+                const auto number = [&](const value& x) {
+                    if (!x.is_ex()) throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
+                    return to_double(x.as_ex(), b, "a point's coordinate");
+                };
+                if (!pt.is_list() || pt.as_list().size() != 2)
+                    throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
+                ps.x.push_back(number(pt.as_list()[0]));
+                ps.y.push_back(number(pt.as_list()[1]));
+            }
+            if (ps.x.empty()) throw type_error(b.name + ": an empty list of points");
+            if (spec.points.size() > 0) ps.name += " " + std::to_string(spec.points.size() + 1);
+            spec.points.push_back(std::move(ps));
+        }
+    } else {
+        es.push_back(arg_ex(a, 0, b));
+    }
+    if (es.empty() && spec.points.empty()) throw type_error(b.name + ": nothing to plot (the list is empty)");
+    const data_values d = read_values(a[1], b, 1);
+    const time_range tr = time_arg(a, 2, b, d);
+    const std::string file = file_arg(a, 3, b, c);
+    const long n = points_arg(a, 4, b, 1000);
+    std::vector<ex> fs;
+    for (ex e : es) {
+        std::string name;  // name = e labels the curve
+        if (GiNaC::is_a<GiNaC::relational>(e) && GiNaC::is_a<GiNaC::symbol>(e.lhs()) &&
+            !is_vector_symbol(e.lhs())) {
+            name = print_ex(e.lhs());
+            e = e.rhs();
+        }
+        const std::vector<ex> cs = components(with_values(e, d, tr, b));
+        if (cs.size() == 3 && is_vector(e)) {
+            static const char* xyz[] = {"x", "y", "z"};
+            for (std::size_t k = 0; k < 3; ++k) {
+                fs.push_back(cs[k]);
+                spec.names.push_back(std::string(xyz[k]) + " of " + (name.empty() ? short_text(e, 40) : name));
+            }
+        } else if (cs.size() == 1) {
+            fs.push_back(cs[0]);
+            spec.names.push_back(name.empty() ? short_text(e, 60) : name);
+        } else {
+            throw type_error(b.name + ": cannot plot " + message_text(e) +
+                             ": a scalar, a list of scalars or a vector is needed");
+        }
+    }
+    spec.columns = sample(fs, tr, std::size_t(n), b, spec.t);
+    spec.xlabel = print_ex(tr.t);
+    spec.ylabel = fs.size() == 1 && spec.points.empty() ? spec.names[0] : std::string("value");
+    if (fs.size() == 1 && spec.points.empty()) spec.names.clear();
+    spec.title = title_arg(a, 5, b, es.size() == 1 ? short_text(es[0]) : std::string("plot"));
+    output::write_plot(spec, file, b.name);
+    c.wrote_file(file);
+    return value();
+}
+
+value builtin_trajectory(const builtin& b, const args_t& a, context& c) {
+    return space_curve(b, a, c, false);
+}
+
+value builtin_hodograph(const builtin& b, const args_t& a, context& c) {
+    return space_curve(b, a, c, true);
+}
+
 }  // namespace
 
 void register_plot_builtins(registry& r) {
-    add_builtin(r, section, "plot", "plot(e, values, t = [t0, t1], \"file.png\" [, n [, \"title\"]])",
-                "Draws e as a function of t on [t0, t1] (n samples, default 1000) into a PNG or SVG file (the "
-                "extension chooses; gnuplot draws it, and must be installed: Debian package gnuplot-nox, or "
-                "the program named by SYMREP_GNUPLOT). e is a scalar expression, a list of them (one curve "
-                "each, with a legend) or a vector (its x, y, z components); name = e labels a curve. values as in eval: name = value, "
-                "vectors as [x, y, z]; the ends t0, t1 may use them. A relative file name is relative to the "
-                "running script; a file that already holds the same picture is left alone. Returns nothing.",
-                "", "plot([sin(t), cos(w*t)], [w = 2], t = [0, 2*pi], \"/tmp/symrep_plot_example.svg\")", 4, 6,
-                [](const builtin& b, const args_t& a, context& c) -> value {
-                    std::vector<ex> es;
-                    output::plot_spec spec;
-                    if (a[0].is_list()) {
-                        // an entry that is a list of [x, y] pairs is a set of points (a table)
-                        for (const value& v : a[0].as_list()) {
-                            if (!v.is_list()) {
-                                if (!v.is_ex()) throw type_error(b.name + ": a curve must be an expression or a list of [x, y] points");
-                                es.push_back(v.as_ex());
-                                continue;
-                            }
-                            output::plot_spec::point_set ps;
-                            ps.name = "points";
-                            for (const value& pt : v.as_list()) {
-                                const auto number = [&](const value& x) {
-                                    if (!x.is_ex()) throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
-                                    return to_double(x.as_ex(), b, "a point's coordinate");
-                                };
-                                if (!pt.is_list() || pt.as_list().size() != 2)
-                                    throw type_error(b.name + ": a point must be a pair [x, y] of real numbers");
-                                ps.x.push_back(number(pt.as_list()[0]));
-                                ps.y.push_back(number(pt.as_list()[1]));
-                            }
-                            if (ps.x.empty()) throw type_error(b.name + ": an empty list of points");
-                            if (spec.points.size() > 0) ps.name += " " + std::to_string(spec.points.size() + 1);
-                            spec.points.push_back(std::move(ps));
-                        }
-                    } else {
-                        es.push_back(arg_ex(a, 0, b));
-                    }
-                    if (es.empty() && spec.points.empty()) throw type_error(b.name + ": nothing to plot (the list is empty)");
-                    const data_values d = read_values(a[1], b, 1);
-                    const time_range tr = time_arg(a, 2, b, d);
-                    const std::string file = file_arg(a, 3, b, c);
-                    const long n = points_arg(a, 4, b, 1000);
-                    std::vector<ex> fs;
-                    for (ex e : es) {
-                        std::string name;  // name = e labels the curve
-                        if (GiNaC::is_a<GiNaC::relational>(e) && GiNaC::is_a<GiNaC::symbol>(e.lhs()) &&
-                            !is_vector_symbol(e.lhs())) {
-                            name = print_ex(e.lhs());
-                            e = e.rhs();
-                        }
-                        const std::vector<ex> cs = components(with_values(e, d, tr, b));
-                        if (cs.size() == 3 && is_vector(e)) {
-                            static const char* xyz[] = {"x", "y", "z"};
-                            for (std::size_t k = 0; k < 3; ++k) {
-                                fs.push_back(cs[k]);
-                                spec.names.push_back(std::string(xyz[k]) + " of " + (name.empty() ? short_text(e, 40) : name));
-                            }
-                        } else if (cs.size() == 1) {
-                            fs.push_back(cs[0]);
-                            spec.names.push_back(name.empty() ? short_text(e, 60) : name);
-                        } else {
-                            throw type_error(b.name + ": cannot plot " + message_text(e) +
-                                             ": a scalar, a list of scalars or a vector is needed");
-                        }
-                    }
-                    spec.columns = sample(fs, tr, std::size_t(n), b, spec.t);
-                    spec.xlabel = print_ex(tr.t);
-                    spec.ylabel = fs.size() == 1 && spec.points.empty() ? spec.names[0] : std::string("value");
-                    if (fs.size() == 1 && spec.points.empty()) spec.names.clear();
-                    spec.title = title_arg(a, 5, b, es.size() == 1 ? short_text(es[0]) : std::string("plot"));
-                    output::write_plot(spec, file, b.name);
-                    c.wrote_file(file);
-                    return value();
-                });
-    add_builtin(r, section, "trajectory", "trajectory(r, values, t = [t0, t1], \"file.svg\" [, n [, \"title\"]])",
-                "Draws the space curve of the vector function r(t), t in [t0, t1] (n samples, default 2000), "
-                "into a PNG or SVG file as plot does: axes x, y, z at equal scales, the start marked. A curve "
-                "in a plane z = const is shown from above.",
-                "", "vector w, r0\ntrajectory(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], "
-                "t = [0, 6], \"/tmp/symrep_trajectory_example.svg\")",
-                4, 6, [](const builtin& b, const args_t& a, context& c) { return space_curve(b, a, c, false); });
-    add_builtin(r, section, "hodograph", "hodograph(r, values, t = [t0, t1], \"file.png\" [, n [, \"title\"]])",
-                "Draws the hodograph of the motion r(t): the curve of its velocity dr/dt (diff(r, t), vector "
-                "constants being constant), as trajectory draws a curve.",
-                "", "vector w, r0\nhodograph(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], "
-                "t = [0, 6], \"/tmp/symrep_hodograph_example.svg\")",
-                4, 6, [](const builtin& b, const args_t& a, context& c) { return space_curve(b, a, c, true); });
+    add_builtins(r, section, {
+        {"plot", "plot(e, values, t = [t0, t1], \"file.png\" [, n [, \"title\"]])",
+         "Draws e as a function of t on [t0, t1] (n samples, default 1000) into a PNG or SVG file (the "
+         "extension chooses; gnuplot draws it, and must be installed: Debian package gnuplot-nox, or "
+         "the program named by SYMREP_GNUPLOT). e is a scalar expression, a list of them (one curve "
+         "each, with a legend) or a vector (its x, y, z components); name = e labels a curve. values as in eval: name = value, "
+         "vectors as [x, y, z]; the ends t0, t1 may use them. A relative file name is relative to the "
+         "running script; a file that already holds the same picture is left alone. Returns nothing.",
+         "", "plot([sin(t), cos(w*t)], [w = 2], t = [0, 2*pi], \"/tmp/symrep_plot_example.svg\")",
+         4, 6, builtin_plot},
+        {"trajectory", "trajectory(r, values, t = [t0, t1], \"file.svg\" [, n [, \"title\"]])",
+         "Draws the space curve of the vector function r(t), t in [t0, t1] (n samples, default 2000), "
+         "into a PNG or SVG file as plot does: axes x, y, z at equal scales, the start marked. A curve "
+         "in a plane z = const is shown from above.",
+         "", "vector w, r0\ntrajectory(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], "
+         "t = [0, 6], \"/tmp/symrep_trajectory_example.svg\")", 4, 6, builtin_trajectory},
+        {"hodograph", "hodograph(r, values, t = [t0, t1], \"file.png\" [, n [, \"title\"]])",
+         "Draws the hodograph of the motion r(t): the curve of its velocity dr/dt (diff(r, t), vector "
+         "constants being constant), as trajectory draws a curve.",
+         "", "vector w, r0\nhodograph(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], "
+         "t = [0, 6], \"/tmp/symrep_hodograph_example.svg\")", 4, 6, builtin_hodograph},
+    });
 }
 
 }  // namespace symrep::lang

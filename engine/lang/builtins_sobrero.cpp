@@ -12,16 +12,6 @@ namespace symrep::lang {
 
 namespace {
 
-/// Registers b with fn(args, ctx, b) seeing its own documentation for argument checks.
-void add_with_self(registry& r, builtin b,
-                   std::function<value(const std::vector<value>&, context&, const builtin&)> f) {
-    builtin self = b;  // documentation copy used in messages
-    b.fn = [self = std::move(self), f = std::move(f)](const std::vector<value>& args, context& ctx) {
-        return f(args, ctx, self);
-    };
-    r.add(std::move(b));
-}
-
 std::shared_ptr<const sobrero> sobrero_arg(const std::vector<value>& args, std::size_t i,
                                            const builtin& b) {
     const algebra_ptr& A = arg_algebra(args, i, b);
@@ -33,38 +23,39 @@ std::shared_ptr<const sobrero> sobrero_arg(const std::vector<value>& args, std::
     return S;
 }
 
+value builtin_sobrero(const builtin& b, const std::vector<value>& args, context&) {
+    return value(sobrero::make(arg_int(args, 0, b, 0, 1L << 30)));
+}
+
+value builtin_sobrero_j(const builtin& b, const std::vector<value>& args, context&) {
+    auto S = sobrero_arg(args, 0, b);
+    return value(element(S, S->j()));
+}
+
+value builtin_sobrero_eps(const builtin& b, const std::vector<value>& args, context&) {
+    auto S = sobrero_arg(args, 0, b);
+    return value(element(S, S->eps()));
+}
+
 }  // namespace
 
 void register_sobrero_builtins(registry& r) {
-    const std::string sec = "Sobrero algebra";
-    add_with_self(r,
-                  {"sobrero", "sobrero(n)",
-                   "The generalized Sobrero algebra S = C (x) R[eps]/(eps^(n+1)) of order 2(n+1), "
-                   "with basis 1, eps, ..., eps^n, j, j*eps, ..., j*eps^n; coordinates "
-                   "[a_0..a_n, b_0..b_n] for w = sum (a_k + j b_k) eps^k. Exact for n <= 512; elements with float "
-                   "coordinates (1.5, not 3/2) take the double path for products, inverse, exp and zero divisors, "
-                   "and for 512 < n <= 4096 the algebra is double-precision only (no log there).",
-                   "(III.2.4-6)", "sobrero(2)", sec, 1, 1, {}},
-                  [](const std::vector<value>& args, context&, const builtin& b) -> value {
-                      return value(sobrero::make(arg_int(args, 0, b, 0, 1L << 30)));
-                  });
-    add_with_self(r,
-                  {"sobrero_j", "sobrero_j(A)",
-                   "The complex unit j of the Sobrero algebra A (j^2 = -1).", "(III.2.1, III.2.4)",
-                   "sobrero_j(sobrero(2))", sec, 1, 1, {}},
-                  [](const std::vector<value>& args, context&, const builtin& b) -> value {
-                      auto S = sobrero_arg(args, 0, b);
-                      return value(element(S, S->j()));
-                  });
-    add_with_self(r,
-                  {"sobrero_eps", "sobrero_eps(A)",
-                   "The nilpotent generator eps of the Sobrero algebra A (eps^(n+1) = 0; "
-                   "zero in sobrero(0)).",
-                   "(III.2.2-3)", "sobrero_eps(sobrero(2))", sec, 1, 1, {}},
-                  [](const std::vector<value>& args, context&, const builtin& b) -> value {
-                      auto S = sobrero_arg(args, 0, b);
-                      return value(element(S, S->eps()));
-                  });
+    add_builtins(r, "Sobrero algebra", {
+        {"sobrero", "sobrero(n)",
+         "The generalized Sobrero algebra S = C (x) R[eps]/(eps^(n+1)) of order 2(n+1), "
+         "with basis 1, eps, ..., eps^n, j, j*eps, ..., j*eps^n; coordinates "
+         "[a_0..a_n, b_0..b_n] for w = sum (a_k + j b_k) eps^k. Exact for n <= 512; elements with float "
+         "coordinates (1.5, not 3/2) take the double path for products, inverse, exp and zero divisors, "
+         "and for 512 < n <= 4096 the algebra is double-precision only (no log there).",
+         "(III.2.4-6)", "sobrero(2)", 1, 1, builtin_sobrero},
+        {"sobrero_j", "sobrero_j(A)",
+         "The complex unit j of the Sobrero algebra A (j^2 = -1).",
+         "(III.2.1, III.2.4)", "sobrero_j(sobrero(2))", 1, 1, builtin_sobrero_j},
+        {"sobrero_eps", "sobrero_eps(A)",
+         "The nilpotent generator eps of the Sobrero algebra A (eps^(n+1) = 0; "
+         "zero in sobrero(0)).",
+         "(III.2.2-3)", "sobrero_eps(sobrero(2))", 1, 1, builtin_sobrero_eps},
+    });
 }
 
 }  // namespace symrep::lang

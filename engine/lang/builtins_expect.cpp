@@ -1,4 +1,7 @@
-// symrep/lang/builtins_check.cpp -- self-checks inside derivation scripts.
+// symrep/lang/builtins_expect.cpp -- the assertions of derivation scripts, expect and
+// expect_near (section "Checks"). They are the language's own: equality as == decides it
+// (values_equal), numbers as floats. The check of a solution of a problem, check(P, s),
+// and its numeric sibling verify belong to mechanics and are in builtins_mechanics.cpp.
 //
 // Every result a derivation script prints should be checked where it is
 // derived: `expect(w * inverse(w) == one(A))` fails the statement (and so the
@@ -79,56 +82,58 @@ void numbers_of(const value& v, const builtin& b, int argno, std::vector<std::co
     }
 }
 
+value builtin_expect(const builtin& b, const std::vector<value>& args, context&) {
+    if (holds(args[0], b)) return {};
+    std::string msg = "expectation failed";
+    if (args.size() > 1) msg += ": " + arg_string(args, 1, b);
+    throw error(msg);
+}
+
+value builtin_expect_near(const builtin& b, const std::vector<value>& args, context&) {
+    std::vector<std::complex<double>> x, y;
+    std::string sx, sy;
+    numbers_of(args[0], b, 1, x, sx);
+    numbers_of(args[1], b, 2, y, sy);
+    const double tol = to_double(arg_ex(args, 2, b), b, 3);
+    if (sx != sy)
+        throw type_error(b.name + ": arguments 1 and 2 have different shapes (" +
+                         std::to_string(x.size()) + " and " + std::to_string(y.size()) + " numbers)");
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (std::abs(x[i] - y[i]) <= tol) continue;
+        std::ostringstream os;
+        os.precision(17);
+        os << "expectation failed: ";
+        if (x.size() > 1) os << "entry " << i << ": ";
+        auto put = [&](std::complex<double> z) {
+            if (z.imag() == 0) os << z.real();
+            else os << z.real() << (z.imag() < 0 ? " - " : " + ") << std::abs(z.imag()) << "*I";
+        };
+        os << "|";
+        put(x[i]);
+        os << " - ";
+        put(y[i]);
+        os << "| = " << std::abs(x[i] - y[i]) << " > " << tol;
+        throw error(os.str());
+    }
+    return {};
+}
+
 }  // namespace
 
-void register_check_builtins(registry& r) {
-    r.add({"expect", "expect(condition [, message])",
-           "Checks a condition: a boolean such as `a == b` (exact, mathematical equality) or an "
-           "equation `a = b` (holds when a - b simplifies to 0). Prints nothing when it holds; "
-           "otherwise the statement fails with the message, so the script exits with status 1.",
-           "", "expect((x + 1)^2 == x^2 + 2*x + 1, \"binomial square\")", "Checks", 1, 2,
-           [](const std::vector<value>& args, context&) -> value {
-               builtin b{"expect", "expect(condition [, message])", "", "", "", "", 1, 2, {}};
-               if (holds(args[0], b)) return {};
-               std::string msg = "expectation failed";
-               if (args.size() > 1) msg += ": " + arg_string(args, 1, b);
-               throw error(msg);
-           }});
-    r.add({"expect_near", "expect_near(a, b, tolerance)",
-           "Checks that two numeric values differ by at most `tolerance` in absolute value (evaluated "
-           "in floating point; complex numbers by modulus). a and b may also be lists, matrices or "
-           "elements of the same shape, compared entry by entry; fails the statement otherwise, "
-           "naming the first entry that differs.",
-           "", "expect_near(evalf(pi), 355/113, 1e-6)", "Checks", 3, 3,
-           [](const std::vector<value>& args, context&) -> value {
-               builtin b{"expect_near", "expect_near(a, b, tolerance)", "", "", "", "", 3, 3, {}};
-               std::vector<std::complex<double>> x, y;
-               std::string sx, sy;
-               numbers_of(args[0], b, 1, x, sx);
-               numbers_of(args[1], b, 2, y, sy);
-               const double tol = to_double(arg_ex(args, 2, b), b, 3);
-               if (sx != sy)
-                   throw type_error(b.name + ": arguments 1 and 2 have different shapes (" +
-                                    std::to_string(x.size()) + " and " + std::to_string(y.size()) + " numbers)");
-               for (std::size_t i = 0; i < x.size(); ++i) {
-                   if (std::abs(x[i] - y[i]) <= tol) continue;
-                   std::ostringstream os;
-                   os.precision(17);
-                   os << "expectation failed: ";
-                   if (x.size() > 1) os << "entry " << i << ": ";
-                   auto put = [&](std::complex<double> z) {
-                       if (z.imag() == 0) os << z.real();
-                       else os << z.real() << (z.imag() < 0 ? " - " : " + ") << std::abs(z.imag()) << "*I";
-                   };
-                   os << "|";
-                   put(x[i]);
-                   os << " - ";
-                   put(y[i]);
-                   os << "| = " << std::abs(x[i] - y[i]) << " > " << tol;
-                   throw error(os.str());
-               }
-               return {};
-           }});
+void register_expect_builtins(registry& r) {
+    add_builtins(r, "Checks", {
+        {"expect", "expect(condition [, message])",
+         "Checks a condition: a boolean such as `a == b` (exact, mathematical equality) or an "
+         "equation `a = b` (holds when a - b simplifies to 0). Prints nothing when it holds; "
+         "otherwise the statement fails with the message, so the script exits with status 1.",
+         "", "expect((x + 1)^2 == x^2 + 2*x + 1, \"binomial square\")", 1, 2, builtin_expect},
+        {"expect_near", "expect_near(a, b, tolerance)",
+         "Checks that two numeric values differ by at most `tolerance` in absolute value (evaluated "
+         "in floating point; complex numbers by modulus). a and b may also be lists, matrices or "
+         "elements of the same shape, compared entry by entry; fails the statement otherwise, "
+         "naming the first entry that differs.",
+         "", "expect_near(evalf(pi), 355/113, 1e-6)", 3, 3, builtin_expect_near},
+    });
 }
 
 }  // namespace symrep::lang
