@@ -65,7 +65,7 @@ echo "installed: $(find "$inc" -name '*.h' | wc -l) headers," \
 # the implementation details stay out (CMakeLists.txt, SYMREP_INTERNAL_HEADERS)
 for h in vector/vector_internal.h algebra/sobrero_kernel.h algebra/walsh_kernel.h \
          algebra/multicomplex_transform.h algebra/multicomplex_indexing.h algebra/batched_exp.h \
-         lang/statement_clock.h; do
+         mechanics/residual_proof.h lang/statement_clock.h; do
     [[ ! -e $inc/$h ]] || fail "internal header installed: $h"
 done
 internal=$(find "$inc" -name '*_internal.h' -o -name '*_kernel.h')
