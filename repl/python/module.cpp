@@ -651,7 +651,11 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__bool__", &to_bool, "Only a boolean has a truth value (TypeError otherwise).")
         .def("__float__", &to_float, "float(v) for a real number, exact or not (evalf at the session's Digits).")
         .def("__len__", [](const py_value& v) { return py::len(items(v)); })
-        .def("__getitem__", [](const py_value& v, const py::object& k) { return items(v)[k]; })
+        .def("__getitem__",
+             [](const py_value& v, const py::object& k) -> py::object {
+                 const py::list l = items(v);
+                 return l[k];  // Python's indexing: negative indices, slices, IndexError
+             })
         .def("__iter__", [](const py_value& v) { return py::iter(items(v)); })
         .def("__getattr__", &builtin_method, py::arg("name"),
              "v.name(args...) is the builtin name(v, args...): v.inverse(), v.charpoly(X).")
