@@ -45,7 +45,7 @@ std::shared_ptr<const walsh_complex> WC(unsigned n) {
 }
 
 bool eq(const coeffs& a, const coeffs& b) { return algebra::equal(a, b); }
-bool same(const ex& a, const ex& b) { return is_zero_scalar(GiNaC::expand(a - b)); }
+using symrep::test::same;
 
 /// (-1)^{<p,q>}
 int sgn(std::size_t p, std::size_t q) { return (std::popcount(p & q) & 1) ? -1 : 1; }

@@ -61,7 +61,7 @@ std::string slurp(const std::string& path) {
 
 std::string examples_dir() { return std::string(SYMREP_SOURCE_DIR) + "/examples"; }
 
-/// Runs one script through SYMREP_BINARY (stdout, stderr, exit status); cached per process.
+/// Runs one script through SYMREP_BINARY --format json (stdout, stderr, exit status); cached per process.
 const run_result& run_script(const std::string& name) {
     static std::map<std::string, run_result> cache;
     auto it = cache.find(name);
@@ -71,7 +71,8 @@ const run_result& run_script(const std::string& name) {
     const std::string err_path = ::testing::TempDir() + "/symrep_examples_" +
                                  std::to_string(getpid()) + "_" + std::to_string(counter++) +
                                  "_err.txt";
-    const std::string cmd = std::string("'") + SYMREP_BINARY + "' '" + examples_dir() + "/" +
+    // results as JSON lines (read by result_after), the text of print() as it is
+    const std::string cmd = std::string("'") + SYMREP_BINARY + "' --format json '" + examples_dir() + "/" +
                             name + "' 2>'" + err_path + "' </dev/null";
     run_result r;
     const auto t0 = std::chrono::steady_clock::now();
@@ -91,11 +92,56 @@ const run_result& run_script(const std::string& name) {
 
 using symrep::test::lines_of;
 
-/// The line printed right after the heading line `heading` (exactly equal).
-std::string after_heading(const std::string& out, const std::string& heading) {
+/// The string field `key` of a one-line JSON object as `symrep --format json` writes a result
+/// ({"file": ..., "line": n, "kind": "...", "value": "..."}, docs/language.md), unescaped;
+/// false when the line is no such object or has no such field.
+bool json_string_field(const std::string& line, const std::string& key, std::string& value) {
+    if (line.empty() || line.front() != '{' || line.back() != '}') return false;
+    const std::string quoted = "\"" + key + "\": \"";
+    std::size_t at = line.find(quoted);
+    if (at == std::string::npos) return false;
+    value.clear();
+    for (at += quoted.size(); at < line.size() && line[at] != '"'; ++at) {
+        if (line[at] != '\\') {
+            value += line[at];
+            continue;
+        }
+        if (++at >= line.size()) return false;
+        switch (line[at]) {
+            case 'n': value += '\n'; break;
+            case 't': value += '\t'; break;
+            case 'r': value += '\r'; break;
+            case 'b': value += '\b'; break;
+            case 'f': value += '\f'; break;
+            case 'u': {  // \u00XX: the control characters json_quote escapes
+                if (at + 4 >= line.size()) return false;
+                const unsigned long c = std::stoul(line.substr(at + 1, 4), nullptr, 16);
+                if (c >= 0x80) return false;
+                value += char(c);
+                at += 4;
+                break;
+            }
+            default: value += line[at];  // \" \\ \/
+        }
+    }
+    return at < line.size();
+}
+
+/// The result printed right after the print()ed heading line `heading` (exactly equal): under
+/// --format json a result is one JSON line; its kind must be `kind`, and its value (the canonical
+/// printer's text) is returned.
+std::string result_after(const std::string& out, const std::string& heading, const std::string& kind) {
     const auto ls = lines_of(out);
-    for (std::size_t k = 0; k + 1 < ls.size(); ++k)
-        if (ls[k] == heading) return ls[k + 1];
+    for (std::size_t k = 0; k + 1 < ls.size(); ++k) {
+        if (ls[k] != heading) continue;
+        std::string got_kind, value;
+        if (!json_string_field(ls[k + 1], "kind", got_kind) || !json_string_field(ls[k + 1], "value", value)) {
+            ADD_FAILURE() << "after '" << heading << "' no JSON result line but: " << ls[k + 1];
+            return "0";
+        }
+        EXPECT_EQ(got_kind, kind) << "the result after '" << heading << "': " << value;
+        return value;
+    }
     ADD_FAILURE() << "no line '" << heading << "' in the output";
     return "0";
 }
@@ -322,15 +368,7 @@ std::vector<ex> basis_symbols(symbols& S, std::initializer_list<const char*> nam
 // ---------------------------------------------------------------------------------
 // comparisons
 
-bool same(const ex& a, const ex& b) { return GiNaC::normal(GiNaC::expand(a - b)).is_zero(); }
-
-::testing::AssertionResult same_coeffs(const coeffs& a, const coeffs& b) {
-    if (a.size() != b.size()) return ::testing::AssertionFailure() << "sizes differ";
-    for (std::size_t k = 0; k < a.size(); ++k)
-        if (!same(a[k], b[k]))
-            return ::testing::AssertionFailure() << "coordinate " << k << ": " << a[k] << " vs " << b[k];
-    return ::testing::AssertionSuccess();
-}
+using symrep::test::same;
 
 /// |a - b| <= tol after evaluation at 30 digits (complex values allowed).
 ::testing::AssertionResult near(const ex& a, const ex& b, double tol = 1e-25) {
@@ -412,7 +450,7 @@ TEST(Examples, TablesAreTheEngineFamilies) {
         for (std::size_t i = 0; i < F->dim(); ++i) {
             EXPECT_TRUE(same(parse(S, F->basis_name(i)), T->monomial(i))) << F->name() << " basis " << i;
             for (std::size_t j = 0; j < F->dim(); ++j)
-                EXPECT_TRUE(same_coeffs(F->basis_product(i, j), T->basis_product(i, j)))
+                EXPECT_TRUE(same(F->basis_product(i, j), T->basis_product(i, j)))
                     << F->name() << " e" << i << " e" << j;
         }
     }
@@ -450,29 +488,29 @@ TEST(ExamplesSobrero, PrintedResultsByValue) {
     S("t");
 
     // (III.2.6) the element and (III.2.9) its canonical matrix
-    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "(III.2.6) w =")), w));
-    const auto M = parse_matrix(S, after_heading(r.out, "(III.2.9) [w] ="));
+    EXPECT_TRUE(same(elem(result_after(r.out, "(III.2.6) w =", "element")), w));
+    const auto M = parse_matrix(S, result_after(r.out, "(III.2.9) [w] =", "expression"));
     const GiNaC::matrix Mw = A->canonical_matrix(w);
     ASSERT_EQ(M.size(), 6u);
     for (unsigned i = 0; i < 6; ++i)
         for (unsigned k = 0; k < 6; ++k) EXPECT_TRUE(same(M[i][k], Mw(i, k))) << i << "," << k;
 
     // (III.2.12) characteristic polynomial, against det(X I - [w]) of the table algebra
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.2.12) charpoly(w, X) =")), A->charpoly(w, X)));
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "det [w] =")), A->determinant(w)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(III.2.12) charpoly(w, X) =", "expression")), A->charpoly(w, X)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "det [w] =", "expression")), A->determinant(w)));
 
     // inverse and minimal polynomials of numeric elements (general linear algebra)
     const coeffs v = elem(inline_value(r.out, "v = "));
-    EXPECT_TRUE(same_coeffs(v, {1, 2, 3, 1, 0, -1}));
-    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "inverse(v) =")), A->inverse(v)));
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "minpoly(v, X) =")), A->minpoly(v, X)));
+    EXPECT_TRUE(same(v, {1, 2, 3, 1, 0, -1}));
+    EXPECT_TRUE(same(elem(result_after(r.out, "inverse(v) =", "element")), A->inverse(v)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "minpoly(v, X) =", "expression")), A->minpoly(v, X)));
     const coeffs u{1, 0, 5, 1, 0, 0};
-    const ex mu = parse(S, after_heading(r.out, "minpoly(1 + j + 5*eps^2, X) ="));
+    const ex mu = parse(S, result_after(r.out, "minpoly(1 + j + 5*eps^2, X) =", "expression"));
     EXPECT_TRUE(same(mu, A->minpoly(u, X)));
     EXPECT_EQ(mu.degree(X), 4);
 
     // (III.2.16-18) semiexponential form: A_k = |xi_k| exactly, phi_k in [0, 2 pi) numerically
-    const auto se = split_list(after_heading(r.out, "(III.2.16) semiexponential(v) = [rho, theta] ="));
+    const auto se = split_list(result_after(r.out, "(III.2.16) semiexponential(v) = [rho, theta] =", "list"));
     ASSERT_EQ(se.size(), 2u);
     const coeffs rho = elem(se[0]), theta = elem(se[1]);
     for (unsigned k = 0; k < 3; ++k) {
@@ -489,23 +527,23 @@ TEST(ExamplesSobrero, PrintedResultsByValue) {
     const coeffs w2 = elem(inline_value(r.out, "w1 = ", "w2 = "));
     const coeffs w12 = elem(inline_value(r.out, "w1*w2 = "));
     const coeffs w1e{1, 2, 1, 1, 2, 1}, w2e{0, 0, 0, 3, 0, 1};
-    EXPECT_TRUE(same_coeffs(w1, w1e));
-    EXPECT_TRUE(same_coeffs(w2, w2e));
-    EXPECT_TRUE(same_coeffs(w12, A->multiply(w1e, w2e)));
+    EXPECT_TRUE(same(w1, w1e));
+    EXPECT_TRUE(same(w2, w2e));
+    EXPECT_TRUE(same(w12, A->multiply(w1e, w2e)));
 
     // (III.2.24) the decomposition of c: sums to c, each part on one line through 0
     const coeffs c = elem(inline_value(r.out, "c = "));
-    const auto parts = split_list(after_heading(r.out, "(III.2.24) special_type_decomposition(c) ="));
+    const auto parts = split_list(result_after(r.out, "(III.2.24) special_type_decomposition(c) =", "list"));
     ASSERT_EQ(parts.size(), 2u);
     const coeffs d0 = elem(parts[0]), d1 = elem(parts[1]);
-    EXPECT_TRUE(same_coeffs(algebra::add(d0, d1), c));
+    EXPECT_TRUE(same(algebra::add(d0, d1), c));
     for (const coeffs* d : {&d0, &d1})
         for (unsigned k = 0; k < 3; ++k)
             for (unsigned l = 0; l < 3; ++l)
                 EXPECT_TRUE(same((*d)[k] * (*d)[3 + l], (*d)[l] * (*d)[3 + k]));
 
     // exp(w t): at rational values of the symbols, against the Taylor series of exp
-    const ex E = parse(S, after_heading(r.out, "exp(w t) ="));
+    const ex E = parse(S, result_after(r.out, "exp(w t) =", "element"));
     const GiNaC::exmap at{{S("a0"), numeric(1, 3)}, {S("a1"), numeric(-2, 5)}, {S("a2"), numeric(3, 4)},
                           {S("b0"), numeric(5, 4)}, {S("b1"), numeric(1, 2)}, {S("b2"), numeric(-1, 3)},
                           {S("t"), numeric(7, 10)}};
@@ -513,12 +551,12 @@ TEST(ExamplesSobrero, PrintedResultsByValue) {
     EXPECT_TRUE(near_coeffs(subs_all(A->coords_of(E, B), at), exp_series(*A, wt)));
 
     // log(v): the Taylor series of exp at the printed logarithm gives back v
-    const coeffs L = elem(after_heading(r.out, "log(v) ="));
+    const coeffs L = elem(result_after(r.out, "log(v) =", "element"));
     EXPECT_TRUE(near_coeffs(exp_series(*A, L), v));
 
     // (III.4.13) the generating element and its minimal polynomial, by the general method
     const coeffs g = elem(inline_value(r.out, "(III.4.13) d = "));
-    EXPECT_TRUE(same_coeffs(g, {0, 1, 0, 1, 0, 0}));
+    EXPECT_TRUE(same(g, {0, 1, 0, 1, 0, 0}));
     EXPECT_TRUE(same(parse(S, inline_value(r.out, "(III.4.13) d = ", "minpoly(d, X) = ")),
                      A->minpoly(g, X)));
 }
@@ -542,18 +580,18 @@ TEST(ExamplesWalsh, PrintedResultsByValue) {
     const coeffs f{S("f0"), S("f1"), S("f2"), S("f3")};
 
     // (III.3.7) the idempotents, against (III.3.22) e_p = 2^-n sum_q (-1)^<p,q> w_q
-    const auto e = split_list(after_heading(r.out, "(III.3.7) e_0 .. e_3 ="));
+    const auto e = split_list(result_after(r.out, "(III.3.7) e_0 .. e_3 =", "list"));
     ASSERT_EQ(e.size(), 4u);
     for (std::size_t p = 0; p < 4; ++p) {
         coeffs expect(4);
         for (std::size_t q = 0; q < 4; ++q) expect[q] = numeric(hadamard_sign(p, q), 4);
         const coeffs ep = elem(e[p]);
-        EXPECT_TRUE(same_coeffs(ep, expect)) << p;
-        EXPECT_TRUE(same_coeffs(A->multiply(ep, ep), ep)) << p;
+        EXPECT_TRUE(same(ep, expect)) << p;
+        EXPECT_TRUE(same(A->multiply(ep, ep), ep)) << p;
     }
 
     // (III.3.25) components a_p = sum_q (-1)^<p,q> f_q
-    const auto a = parse_list(S, after_heading(r.out, "(III.3.25) components a_p ="));
+    const auto a = parse_list(S, result_after(r.out, "(III.3.25) components a_p =", "list"));
     ASSERT_EQ(a.size(), 4u);
     for (std::size_t p = 0; p < 4; ++p) {
         ex ap = 0;
@@ -562,16 +600,16 @@ TEST(ExamplesWalsh, PrintedResultsByValue) {
     }
 
     // canonical matrix, det (III.3.28), charpoly (III.3.34) by the general methods
-    const auto M = parse_matrix(S, after_heading(r.out, "[f] ="));
+    const auto M = parse_matrix(S, result_after(r.out, "[f] =", "expression"));
     const GiNaC::matrix Mf = A->canonical_matrix(f);
     ASSERT_EQ(M.size(), 4u);
     for (unsigned i = 0; i < 4; ++i)
         for (unsigned k = 0; k < 4; ++k) EXPECT_TRUE(same(M[i][k], Mf(i, k)));
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.3.28) det [f] =")), A->determinant(f)));
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.3.34) charpoly(f, X) =")), A->charpoly(f, X)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(III.3.28) det [f] =", "expression")), A->determinant(f)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(III.3.34) charpoly(f, X) =", "expression")), A->charpoly(f, X)));
 
     // (III.3.44) exp(f t) against the Taylor series at rational values
-    const ex E = parse(S, after_heading(r.out, "(III.3.44) exp(f t) ="));
+    const ex E = parse(S, result_after(r.out, "(III.3.44) exp(f t) =", "element"));
     const GiNaC::exmap at{{S("f0"), numeric(1, 3)}, {S("f1"), numeric(-2, 5)}, {S("f2"), numeric(3, 4)},
                           {S("f3"), numeric(5, 4)}, {S("t"), numeric(-9, 10)}};
     EXPECT_TRUE(near_coeffs(subs_all(A->coords_of(E, B), at),
@@ -579,9 +617,9 @@ TEST(ExamplesWalsh, PrintedResultsByValue) {
 
     // inverse and minimal polynomial of g
     const coeffs g = elem(inline_value(r.out, "g = "));
-    EXPECT_TRUE(same_coeffs(g, {3, 1, 1, 0}));
-    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "inverse(g) =")), A->inverse(g)));
-    const ex mg = parse(S, after_heading(r.out, "minpoly(g, X) ="));
+    EXPECT_TRUE(same(g, {3, 1, 1, 0}));
+    EXPECT_TRUE(same(elem(result_after(r.out, "inverse(g) =", "element")), A->inverse(g)));
+    const ex mg = parse(S, result_after(r.out, "minpoly(g, X) =", "expression"));
     EXPECT_TRUE(same(mg, A->minpoly(g, X)));
     EXPECT_EQ(GiNaC::expand(mg).degree(X), 3);
 
@@ -599,12 +637,12 @@ TEST(ExamplesWalsh, PrintedResultsByValue) {
 
     // (III.3.40) log(h) in W: exp of the printed logarithm gives back h
     const coeffs h = elem(inline_value(r.out, "h = "));
-    EXPECT_TRUE(same_coeffs(h, {4, 1, 1, 0}));
-    EXPECT_TRUE(near_coeffs(exp_series(*A, elem(after_heading(r.out, "(III.3.40) log(h) ="))), h));
+    EXPECT_TRUE(same(h, {4, 1, 1, 0}));
+    EXPECT_TRUE(near_coeffs(exp_series(*A, elem(result_after(r.out, "(III.3.40) log(h) =", "element"))), h));
 
     // W*: the components of y (III.3.62-63), its inverse, and the logarithms (III.3.67)
     const coeffs y = elem_s(inline_value(r.out, "y = "));
-    EXPECT_TRUE(same_coeffs(y, {1, 2, 0, 0, 3, 0, 0, 1}));
+    EXPECT_TRUE(same(y, {1, 2, 0, 0, 3, 0, 0, 1}));
     const auto cy = parse_list(S, inline_value(r.out, "y = ", "(III.3.61) components: "));
     ASSERT_EQ(cy.size(), 4u);
     for (std::size_t p = 0; p < 4; ++p) {
@@ -612,14 +650,14 @@ TEST(ExamplesWalsh, PrintedResultsByValue) {
         for (std::size_t q = 0; q < 4; ++q) c += hadamard_sign(p, q) * (y[q] + GiNaC::I * y[4 + q]);
         EXPECT_TRUE(same(cy[p], c)) << p;
     }
-    EXPECT_TRUE(same_coeffs(elem_s(inline_value(r.out, "inverse(y) = ")), As->inverse(y)));
+    EXPECT_TRUE(same(elem_s(inline_value(r.out, "inverse(y) = ")), As->inverse(y)));
     const coeffs ks{1, 2, 0, 0, 0, 0, 0, 0};
-    EXPECT_TRUE(near_coeffs(exp_series(*As, elem_s(after_heading(r.out, "(III.3.67) log(1 + 2*u1) in W* ="))), ks));
-    EXPECT_TRUE(near_coeffs(exp_series(*As, elem_s(after_heading(r.out, "(III.3.67) log(y) ="))), y));
+    EXPECT_TRUE(near_coeffs(exp_series(*As, elem_s(result_after(r.out, "(III.3.67) log(1 + 2*u1) in W* =", "element"))), ks));
+    EXPECT_TRUE(near_coeffs(exp_series(*As, elem_s(result_after(r.out, "(III.3.67) log(y) =", "element"))), y));
 
     // (III.4.15-18) the generating element: minimal polynomial by the general method
     const coeffs d = elem(inline_value(r.out, "(III.4.15) d = "));
-    EXPECT_TRUE(same_coeffs(d, {0, 2, 1, 0}));
+    EXPECT_TRUE(same(d, {0, 2, 1, 0}));
     const ex md = parse(S, inline_value(r.out, "(III.4.15) d = ", "minpoly(d, X) = "));
     EXPECT_TRUE(same(md, A->minpoly(d, X)));
     EXPECT_TRUE(same(md, A->charpoly(d, X)));
@@ -687,21 +725,21 @@ TEST(ExamplesMulticomplex, PrintedResultsByValue) {
     };
 
     // (III.1.15) the idempotents of multicomplex(2), against the product formula
-    const auto e = split_list(after_heading(r.out, "(III.1.15) e_0 .. e_3 in multicomplex(2) ="));
+    const auto e = split_list(result_after(r.out, "(III.1.15) e_0 .. e_3 in multicomplex(2) =", "list"));
     ASSERT_EQ(e.size(), 4u);
     for (std::size_t p = 0; p < 4; ++p)
-        EXPECT_TRUE(same_coeffs(elem2(e[p]), from_poly(*A2, multicomplex_idempotent_poly(2, p, S)))) << p;
+        EXPECT_TRUE(same(elem2(e[p]), from_poly(*A2, multicomplex_idempotent_poly(2, p, S)))) << p;
 
     // (III.1.39) the components of w, from w e_p = (a_p + i0 b_p) e_p
     const coeffs w{S("x0"), S("x1"), S("x2"), S("x3")};
-    EXPECT_TRUE(same_coeffs(elem1(inline_value(r.out, "w = ")), w));
-    const auto c = parse_list(S, after_heading(r.out, "(III.1.39) components a_p + I*b_p ="));
+    EXPECT_TRUE(same(elem1(inline_value(r.out, "w = ")), w));
+    const auto c = parse_list(S, result_after(r.out, "(III.1.39) components a_p + I*b_p =", "list"));
     const auto cw = components(*A1, 1, w);
     ASSERT_EQ(c.size(), 2u);
     for (std::size_t p = 0; p < 2; ++p) EXPECT_TRUE(same(c[p], cw[p])) << p;
 
     // (III.1.59) charpoly by the general method
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(III.1.59) charpoly(w, X) =")), A1->charpoly(w, X)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(III.1.59) charpoly(w, X) =", "expression")), A1->charpoly(w, X)));
 
     // corrected minimal polynomials (III.1.59-60), by the Krylov method of the table algebra
     const coeffs one_i0 = from_poly(*A1, 1 + S("i0"));
@@ -714,8 +752,11 @@ TEST(ExamplesMulticomplex, PrintedResultsByValue) {
     EXPECT_TRUE(same(mz.subs(X == 0), 0));  // the extra factor X
     const coeffs zz = elem2(inline_value(r.out, "zz = "));
     const auto czz = components(*A2, 2, zz);
-    EXPECT_TRUE(same(czz[0], 0) && same(czz[1], 1 + GiNaC::I) && same(czz[2], 2) && same(czz[3], 3 * GiNaC::I));
-    const ex mzz = parse(S, after_heading(r.out, "minpoly(zz, X) ="));
+    EXPECT_TRUE(same(czz[0], 0));
+    EXPECT_TRUE(same(czz[1], 1 + GiNaC::I));
+    EXPECT_TRUE(same(czz[2], 2));
+    EXPECT_TRUE(same(czz[3], 3 * GiNaC::I));
+    const ex mzz = parse(S, result_after(r.out, "minpoly(zz, X) =", "expression"));
     EXPECT_TRUE(same(mzz, A2->minpoly(zz, X)));
     EXPECT_EQ(GiNaC::expand(mzz).degree(X), 6);
 
@@ -725,23 +766,23 @@ TEST(ExamplesMulticomplex, PrintedResultsByValue) {
     const auto cyp = parse_list(S, inline_value(r.out, "y = ", "components: "));
     ASSERT_EQ(cyp.size(), 4u);
     for (std::size_t p = 0; p < 4; ++p) EXPECT_TRUE(same(cyp[p], cy[p])) << p;
-    EXPECT_TRUE(same_coeffs(elem2(after_heading(r.out, "(III.1.57) inverse(y) =")), A2->inverse(y)));
+    EXPECT_TRUE(same(elem2(result_after(r.out, "(III.1.57) inverse(y) =", "element")), A2->inverse(y)));
 
     // (III.1.52) exp(w t) against the Taylor series at rational values
-    const ex E = parse(S, after_heading(r.out, "(III.1.52) exp(w t) ="));
+    const ex E = parse(S, result_after(r.out, "(III.1.52) exp(w t) =", "element"));
     const GiNaC::exmap at{{S("x0"), numeric(1, 3)}, {S("x1"), numeric(-2, 5)}, {S("x2"), numeric(3, 4)},
                           {S("x3"), numeric(5, 4)}, {S("t"), numeric(6, 5)}};
     EXPECT_TRUE(near_coeffs(subs_all(A1->coords_of(E, B), at),
                             exp_series(*A1, algebra::scale(numeric(6, 5), subs_all(w, at)))));
 
     // (III.1.53) log(y): exp of it gives back y; (III.1.72) rho exp(theta) = y
-    EXPECT_TRUE(near_coeffs(exp_series(*A2, elem2(after_heading(r.out, "(III.1.53) log(y) ="))), y));
-    const auto se = split_list(after_heading(r.out, "(III.1.72) semiexponential(y) = [rho, theta] ="));
+    EXPECT_TRUE(near_coeffs(exp_series(*A2, elem2(result_after(r.out, "(III.1.53) log(y) =", "element"))), y));
+    const auto se = split_list(result_after(r.out, "(III.1.72) semiexponential(y) = [rho, theta] =", "list"));
     ASSERT_EQ(se.size(), 2u);
     EXPECT_TRUE(near_coeffs(A2->multiply(elem2(se[0]), exp_series(*A2, elem2(se[1]))), y));
 
     // Thm III.1.3.1: the decomposition sums to y and each term has components of one modulus
-    const auto parts = split_list(after_heading(r.out, "(III.1.91) special_type_decomposition(y) ="));
+    const auto parts = split_list(result_after(r.out, "(III.1.91) special_type_decomposition(y) =", "list"));
     ASSERT_GE(parts.size(), 1u);
     ASSERT_LE(parts.size(), 4u);
     coeffs sum = A2->zero();
@@ -753,7 +794,7 @@ TEST(ExamplesMulticomplex, PrintedResultsByValue) {
             EXPECT_TRUE(same(GiNaC::abs(cd[p]), GiNaC::abs(cd[0]))) << part;
         EXPECT_FALSE(same(cd[0], 0)) << part;
     }
-    EXPECT_TRUE(same_coeffs(sum, y));
+    EXPECT_TRUE(same(sum, y));
 
     // (III.4.5-9) the generating element's minimal polynomial equals its characteristic one
     const coeffs g = elem2(inline_value(r.out, "(III.4.5) d = "));
@@ -769,7 +810,7 @@ TEST(ExamplesWalsh, LogWithANegativeRootPointsToWStar) {
     const std::string err_path = ::testing::TempDir() + "/symrep_examples_" +
                                  std::to_string(getpid()) + "_neglog_err.txt";
     const std::string cmd = std::string("'") + SYMREP_BINARY +
-                            "' -e 'log(element(walsh(2), [1, 2, 0, 0]))'"
+                            "' --format json -e 'log(element(walsh(2), [1, 2, 0, 0]))'"
                             " -e 'log(element(walsh_complex(2), [1, 2, 0, 0, 0, 0, 0, 0]))'"
                             " 2>'" + err_path + "' </dev/null";
     std::string out;
@@ -782,15 +823,23 @@ TEST(ExamplesWalsh, LogWithANegativeRootPointsToWStar) {
     const std::string err = slurp(err_path);
     std::remove(err_path.c_str());
     EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 1);
-    EXPECT_NE(err.find("a_1 = -1"), std::string::npos) << err;
-    EXPECT_NE(err.find("walsh_complex(2)"), std::string::npos) << err;
+    // the error: one JSON line on stderr
+    const auto errs = lines_of(err);
+    ASSERT_EQ(errs.size(), 1u) << err;
+    std::string message;
+    ASSERT_TRUE(json_string_field(errs[0], "error", message)) << err;
+    EXPECT_NE(message.find("a_1 = -1"), std::string::npos) << message;
+    EXPECT_NE(message.find("walsh_complex(2)"), std::string::npos) << message;
     // the logarithm in W*, by value: exp of it (Taylor series) is 1 + 2 u1
     symbols S;
     auto As = walsh_table(2, true, S);
     const auto B = basis_symbols(S, {"u0", "u1", "i0"});
     const auto ls = lines_of(out);
     ASSERT_EQ(ls.size(), 1u) << out;
-    EXPECT_TRUE(near_coeffs(exp_series(*As, As->coords_of(parse(S, ls[0]), B)), {1, 2, 0, 0, 0, 0, 0, 0}));
+    std::string kind, value;
+    ASSERT_TRUE(json_string_field(ls[0], "kind", kind) && json_string_field(ls[0], "value", value)) << ls[0];
+    EXPECT_EQ(kind, "element");
+    EXPECT_TRUE(near_coeffs(exp_series(*As, As->coords_of(parse(S, value), B)), {1, 2, 0, 0, 0, 0, 0, 0}));
 }
 
 namespace {
@@ -839,21 +888,21 @@ TEST(ExamplesAlgebras, PrintedResultsByValue) {
     auto elem = [&](const std::string& text) { return A->coords_of(parse(S, text), BA); };
     // the unit is e0 + e1, not e_0
     const coeffs one = A->unit();
-    EXPECT_TRUE(same_coeffs(A->multiply(one, {S("x"), S("y"), S("z")}), {S("x"), S("y"), S("z")}));
-    EXPECT_TRUE(same_coeffs(elem(inline_value(r.out, "A = ", "one(A) = ")), one));
+    EXPECT_TRUE(same(A->multiply(one, {S("x"), S("y"), S("z")}), {S("x"), S("y"), S("z")}));
+    EXPECT_TRUE(same(elem(inline_value(r.out, "A = ", "one(A) = ")), one));
 
     // (II.1.3-4) canonical matrix and (II.1.20) charpoly by the general methods
     const coeffs w{S("x"), S("y"), S("z")};
-    const auto M = parse_matrix(S, after_heading(r.out, "(II.1.3) [w] ="));
+    const auto M = parse_matrix(S, result_after(r.out, "(II.1.3) [w] =", "expression"));
     const GiNaC::matrix Mw = A->canonical_matrix(w);
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(same(M[i][k], Mw(i, k)));
-    EXPECT_TRUE(same(parse(S, after_heading(r.out, "(II.1.20) charpoly(w, X) =")), A->charpoly(w, X)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(II.1.20) charpoly(w, X) =", "expression")), A->charpoly(w, X)));
     EXPECT_TRUE(same(parse(S, inline_value(r.out, "(II.1.21) det [w] = ")), A->determinant(w)));
 
     // the inverse by the general method (the linear system v u = 1, with the true unit)
     const coeffs v = elem(inline_value(r.out, "v = "));
-    EXPECT_TRUE(same_coeffs(elem(after_heading(r.out, "inverse(v) =")), A->inverse(v)));
+    EXPECT_TRUE(same(elem(result_after(r.out, "inverse(v) =", "element")), A->inverse(v)));
 
     // Thm III.4.1: the generator has a minimal polynomial of degree 3 (Krylov, with the true unit)
     const coeffs d = elem(inline_value(r.out, "(Thm III.4.1) d = "));
@@ -865,16 +914,16 @@ TEST(ExamplesAlgebras, PrintedResultsByValue) {
     // exp(d t), the fundamental system and the power-basis change (III.4.4)
     const GiNaC::exmap at{{t, numeric(4, 5)}};
     const coeffs expected = exp_series(*A, algebra::scale(numeric(4, 5), d));
-    EXPECT_TRUE(near_coeffs(subs_all(elem(after_heading(r.out, "(Thm II.2.3) exp(d t) =")), at), expected));
-    const auto F = parse_list(S, after_heading(r.out, "(Thm II.2.3) fundamental_system(d, t) ="));
+    EXPECT_TRUE(near_coeffs(subs_all(elem(result_after(r.out, "(Thm II.2.3) exp(d t) =", "element")), at), expected));
+    const auto F = parse_list(S, result_after(r.out, "(Thm II.2.3) fundamental_system(d, t) =", "list"));
     EXPECT_TRUE(near_coeffs(subs_all(coeffs(F.begin(), F.end()), at), expected));
-    const auto P = parse_matrix(S, after_heading(r.out, "(III.4.4) power_basis_change(A, d) ="));
+    const auto P = parse_matrix(S, result_after(r.out, "(III.4.4) power_basis_change(A, d) =", "expression"));
     ASSERT_EQ(P.size(), 3u);
     const coeffs* powers[3] = {&one, &d, &d2};
-    for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(same_coeffs(coeffs(P[k].begin(), P[k].end()), *powers[k])) << k;
+    for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(same(coeffs(P[k].begin(), P[k].end()), *powers[k])) << k;
 
     // log(v): exp of it gives back v
-    EXPECT_TRUE(near_coeffs(exp_series(*A, elem(after_heading(r.out, "log(v) ="))), v));
+    EXPECT_TRUE(near_coeffs(exp_series(*A, elem(result_after(r.out, "log(v) =", "element"))), v));
 
     // the non-polynomial algebra N: the generic minimal polynomial, by Krylov on its table
     auto N = integer_table({{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
@@ -887,7 +936,7 @@ TEST(ExamplesAlgebras, PrintedResultsByValue) {
     // the Frobenius matrix of P3 = the canonical matrix of v in R[X]/(p), by polynomial remainders
     const ex p = GiNaC::pow(X, 3) + S("a1") * GiNaC::pow(X, 2) + S("a2") * X + S("a3");
     auto P3 = polynomial_table(p, X, S);
-    const auto Fr = parse_matrix(S, after_heading(r.out, "frobenius_matrix(P3) ="));
+    const auto Fr = parse_matrix(S, result_after(r.out, "frobenius_matrix(P3) =", "expression"));
     const GiNaC::matrix Mv = P3->canonical_matrix({0, 1, 0});
     ASSERT_EQ(Fr.size(), 3u);
     for (unsigned i = 0; i < 3; ++i)
@@ -899,7 +948,7 @@ TEST(ExamplesAlgebras, PrintedResultsByValue) {
     const coeffs dq{0, 2, 0};
     EXPECT_TRUE(same(parse(S, inline_value(r.out, "d = 2v in R[X]/(X^3 - 3X + 2):", "charpoly(d, X) = ")),
                      Q->charpoly(dq, X)));
-    const auto Fq = parse_list(S, after_heading(r.out, "fundamental_system(d, t) ="));
+    const auto Fq = parse_list(S, result_after(r.out, "fundamental_system(d, t) =", "list"));
     EXPECT_TRUE(near_coeffs(subs_all(coeffs(Fq.begin(), Fq.end()), at),
                             exp_series(*Q, algebra::scale(numeric(4, 5), dq))));
     const auto Bv = basis_symbols(S, {"v"});
@@ -916,11 +965,15 @@ TEST(ExamplesAlgebras, InvalidTableIsNamed) {
     const std::string err_path = ::testing::TempDir() + "/symrep_examples_" +
                                  std::to_string(getpid()) + "_table_err.txt";
     const std::string cmd = std::string("'") + SYMREP_BINARY +
-                            "' -e 'algebra_from_table([[[1, 0], [0, 1]], [[0, 0], [1, 0]]])'"
+                            "' --format json -e 'algebra_from_table([[[1, 0], [0, 1]], [[0, 0], [1, 0]]])'"
                             " 2>'" + err_path + "' </dev/null >/dev/null";
     const int st = std::system(cmd.c_str());
     const std::string err = slurp(err_path);
     std::remove(err_path.c_str());
     EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 1);
-    EXPECT_NE(err.find("commutative"), std::string::npos) << err;
+    const auto errs = lines_of(err);
+    ASSERT_EQ(errs.size(), 1u) << err;
+    std::string message;
+    ASSERT_TRUE(json_string_field(errs[0], "error", message)) << err;
+    EXPECT_NE(message.find("commutative"), std::string::npos) << message;
 }

@@ -21,7 +21,7 @@ using GiNaC::ex;
 
 namespace {
 
-bool same(const coeffs& a, const coeffs& b) { return algebra::equal(a, b); }
+using symrep::test::same;
 
 // |a - b| < tol after numerical evaluation of every coordinate.
 bool close(const coeffs& a, const coeffs& b, double tol = 1e-12) {

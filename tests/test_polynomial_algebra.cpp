@@ -19,15 +19,7 @@ using GiNaC::ex;
 
 namespace {
 
-bool same(const coeffs& a, const coeffs& b) { return algebra::equal(a, b); }
-
-bool same(const GiNaC::matrix& a, const GiNaC::matrix& b) {
-    if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
-    for (unsigned r = 0; r < a.rows(); ++r)
-        for (unsigned c = 0; c < a.cols(); ++c)
-            if (!is_zero_scalar(a(r, c) - b(r, c))) return false;
-    return true;
-}
+using symrep::test::same;
 
 using symrep::test::what_of;
 

@@ -3,6 +3,8 @@
 // every identity is checked by the exact zero test (no tolerance).
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include "algebra/polynomial_algebra.h"
 #include "algebra/structure_algebra.h"
 #include "core/error.h"
@@ -19,7 +21,7 @@ namespace {
 const GiNaC::symbol t("t"), X("X"), l("l"), h("h"), k("k");
 const GiNaC::possymbol w("w");  // positive: sqrt(w^2) = w
 
-bool same(const ex& a, const ex& b) { return is_zero_scalar(tidy(GiNaC::expand(a - b))); }
+using symrep::test::same;
 
 // a reference value parsed with 50 digits (a numeric read from a string has the current Digits)
 GiNaC::numeric ref(const char* text) {

@@ -4,6 +4,8 @@
 // All comparisons exact (the zero test); no tolerance.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <sstream>
 
 #include "algebra/polynomial_algebra.h"
@@ -21,7 +23,7 @@ namespace {
 
 const GiNaC::symbol t("t"), X("X");
 
-bool same(const ex& a, const ex& b) { return is_zero_scalar(tidy(GiNaC::expand(a - b))); }
+using symrep::test::same;
 
 // The mechanics solver's answer to `problem` (a scalar Cauchy problem in the language).
 ex solver(const std::string& problem) {

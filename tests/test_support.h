@@ -14,6 +14,7 @@
 #include "algebra/element.h"
 #include "lang/interpreter.h"
 #include "syntax/parser.h"
+#include "test_util.h"  // same(): exact equality of expressions
 
 namespace symrep::test {
 
@@ -67,9 +68,6 @@ struct test_session {
     /// Runs `text` as a script; returns the number of failed statements.
     int run(const std::string& text) { return s.run_string(text, "t.sr"); }
 };
-
-/// Mathematical equality of expressions.
-inline bool same(const GiNaC::ex& a, const GiNaC::ex& b) { return GiNaC::normal(a - b).is_zero(); }
 
 /// Adds the names of the functions called anywhere in the syntax tree n to out.
 inline void called_names(const lang::node& n, std::set<std::string>& out) {

@@ -5,6 +5,8 @@
 // exact transforms. Exact unless a tolerance is stated.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <cmath>
 #include <complex>
 #include <functional>
@@ -30,13 +32,7 @@ namespace {
 const GiNaC::realsymbol t("t"), s("s");
 const GiNaC::possymbol a("a");
 
-bool same(const ex& x, const ex& y) { return is_zero_scalar(tidy(GiNaC::normal(x - y))); }
-
-bool same_element(const coeffs& x, const coeffs& y) {
-    for (std::size_t i = 0; i < x.size(); ++i)
-        if (!same(x[i], y[i])) return false;
-    return true;
-}
+using symrep::test::same;
 
 coeffs transform_of(const algebra_ptr& A, const coeffs& d, const ex& f) { return transform(A, d, f, t).value; }
 
@@ -182,8 +178,8 @@ TEST(Transforms, DerivativeAndConvolution) {
         const coeffs Tf = transform_of(B, d, f);
         coeffs rhs = B->multiply(d, Tf);
         rhs[0] -= f.subs(t == 0);
-        EXPECT_TRUE(same_element(transform_of(B, d, f.diff(t)), rhs)) << B->name();
-        EXPECT_TRUE(same_element(transform_of(B, d, conv), B->multiply(Tf, transform_of(B, d, g)))) << B->name();
+        EXPECT_TRUE(same(transform_of(B, d, f.diff(t)), rhs)) << B->name();
+        EXPECT_TRUE(same(transform_of(B, d, conv), B->multiply(Tf, transform_of(B, d, g)))) << B->name();
     }
 }
 
@@ -197,7 +193,7 @@ TEST(Transforms, TransmittanceRelation) {
     const auto x = signals::respond(as, bs, f, t);
     ASSERT_TRUE(x.has_zero_state);
     const coeffs H = signals::transmittance(*A, d, as, bs);
-    EXPECT_TRUE(same_element(transform_of(A, d, x.zero_state), A->multiply(H, transform_of(A, d, f))));
+    EXPECT_TRUE(same(transform_of(A, d, x.zero_state), A->multiply(H, transform_of(A, d, f))));
 }
 
 // The FFT of samples against the exact transform: f = e^(-t) cos 3t on [0, 40) with
@@ -282,8 +278,8 @@ TEST(Transforms, LinearityAndModulation) {
     const ex f = t * GiNaC::exp(-t) + GiNaC::cos(5 * t) * GiNaC::exp(-t / 2), g = GiNaC::exp(-3 * t);
     coeffs shifted = d;
     shifted[0] += 2;
-    EXPECT_TRUE(same_element(transform_of(A, d, GiNaC::exp(-2 * t) * f), transform_of(A, shifted, f)));
-    EXPECT_TRUE(same_element(transform_of(A, d, 7 * f + g),
+    EXPECT_TRUE(same(transform_of(A, d, GiNaC::exp(-2 * t) * f), transform_of(A, shifted, f)));
+    EXPECT_TRUE(same(transform_of(A, d, 7 * f + g),
                              A->add(A->scale(7, transform_of(A, d, f)), transform_of(A, d, g))));
 }
 
@@ -300,7 +296,7 @@ TEST(Transforms, TransmittanceIsTheTransformOfTheWeightingFunction) {
     const ex H = (s + 3) / (s * s + 2 * s + 5);
     const ex h = inverse_laplace(H, s, t);
     const coeffs Hd = signals::transmittance(*A, d, a, b);
-    EXPECT_TRUE(same_element(transform_of(A, d, h), Hd));
+    EXPECT_TRUE(same(transform_of(A, d, h), Hd));
     const std::vector<ex> z = A->idempotent_components(Hd), dz = A->idempotent_components(d);
     for (std::size_t p = 0; p < z.size(); ++p) EXPECT_TRUE(same(z[p], H.subs(s == dz[p]))) << p;
     // |H(i Omega_p)| are not all equal: H(d) is not of special type (V.2.61 fails)
@@ -354,7 +350,7 @@ TEST(Transforms, TwoSidedSignals) {
     const ex f = t * GiNaC::exp(-t), g = t * GiNaC::exp(t);
     const coeffs TF = transform_two_sided(A, d, f, g, t).value;
     const coeffs TdF = transform_two_sided(A, d, f.diff(t), g.diff(t), t).value;
-    EXPECT_TRUE(same_element(TdF, A->multiply(d, TF)));
+    EXPECT_TRUE(same(TdF, A->multiply(d, TF)));
 }
 
 // (V.2.36-39, Thm V.2.3) The inversion integral evaluated as an integral: f~(t0) = (f(t0+) + f(t0-))/2

@@ -1,5 +1,6 @@
-// tests/test_util.h -- small helpers shared by the test files: the message of
-// an expected exception, and running the symrep program (SYMREP_BINARY).
+// tests/test_util.h -- small helpers shared by the test files: exact equality of
+// expressions with both sides in the failure message (same), the message of an
+// expected exception, and running the symrep program (SYMREP_BINARY).
 #pragma once
 
 #include <sys/wait.h>
@@ -15,7 +16,50 @@
 #include <ginac/ginac.h>
 #include <gtest/gtest.h>
 
+#include "scalar/scalar.h"
+
 namespace symrep::test {
+
+/// An expression as a failure message shows it (long ones cut: the head is what helps).
+inline std::string shown(const GiNaC::ex& e) {
+    std::ostringstream o;
+    o << e;
+    std::string s = o.str();
+    if (s.size() > 2000) s = s.substr(0, 2000) + " ... (" + std::to_string(s.size()) + " characters)";
+    return s;
+}
+
+/// Exact equality of two expressions, for EXPECT_TRUE(same(a, b)) and EXPECT_FALSE(same(a, b)):
+/// a - b expanded, tidied and proved 0 by the engine's exact zero test (is_zero_scalar,
+/// scalar/scalar.h; it never guesses, so "not same" means "not proved equal"). Either way
+/// the message shows both sides, and on failure their difference.
+inline ::testing::AssertionResult same(const GiNaC::ex& a, const GiNaC::ex& b) {
+    const GiNaC::ex d = symrep::tidy(GiNaC::expand(a - b));
+    if (symrep::is_zero_scalar(d)) return ::testing::AssertionSuccess() << shown(a) << " equals " << shown(b);
+    return ::testing::AssertionFailure() << "not proved equal:\n  left:  " << shown(a) << "\n  right: " << shown(b)
+                                         << "\n  left - right: " << shown(d);
+}
+
+/// Coordinate by coordinate (elements of an algebra, vectors): the sizes, then same() of each.
+inline ::testing::AssertionResult same(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b) {
+    if (a.size() != b.size())
+        return ::testing::AssertionFailure() << "sizes differ: " << a.size() << " and " << b.size();
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (auto r = same(a[k], b[k]); !r) return ::testing::AssertionFailure() << "coordinate " << k << ": " << r.message();
+    return ::testing::AssertionSuccess() << "all " << a.size() << " coordinates equal";
+}
+
+/// Entry by entry: the shapes, then same() of each entry.
+inline ::testing::AssertionResult same(const GiNaC::matrix& a, const GiNaC::matrix& b) {
+    if (a.rows() != b.rows() || a.cols() != b.cols())
+        return ::testing::AssertionFailure() << "shapes differ: " << a.rows() << "x" << a.cols() << " and " << b.rows()
+                                             << "x" << b.cols();
+    for (unsigned r = 0; r < a.rows(); ++r)
+        for (unsigned c = 0; c < a.cols(); ++c)
+            if (auto x = same(a(r, c), b(r, c)); !x)
+                return ::testing::AssertionFailure() << "entry (" << r << ", " << c << "): " << x.message();
+    return ::testing::AssertionSuccess() << "all " << a.rows() * a.cols() << " entries equal";
+}
 
 /// The symbol called `name` inside e (a script's t, W ...), or 0 if there is none.
 inline GiNaC::ex symbol_named(const GiNaC::ex& e, const std::string& name) {

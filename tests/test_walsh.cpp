@@ -3,6 +3,8 @@
 // (product-derived) methods of the base class, and the double path.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <cmath>
 #include <complex>
 #include <random>
@@ -46,7 +48,7 @@ coeffs rational(std::size_t N, unsigned seed) {
     return c;
 }
 
-bool same(const ex& p, const ex& q) { return is_zero_scalar(GiNaC::expand(p - q)); }
+using symrep::test::same;
 
 bool close(const coeffs& a, const coeffs& b, double tol = 1e-12) {
     if (a.size() != b.size()) return false;

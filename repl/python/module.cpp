@@ -1,22 +1,27 @@
 // repl/python/module.cpp -- symrep._symrep, the compiled part of the Python module `symrep`
-// (docs/python.md). A thin layer over the language session (lang/interpreter.h) and the
-// compiled evaluators (numeric/evaluator.h, numeric/stable_evaluator.h):
+// (docs/python.md). A thin layer over the language session (lang/interpreter.h), its value
+// arithmetic and builtins (lang::binary_op, lang::negate, lang::values_equal, the registry's
+// bodies), and the compiled evaluators (numeric/evaluator.h, numeric/stable_evaluator.h):
 //
 //   Session   runs statements: eval() returns the last value or raises symrep.Error with the
 //             line and column; run() returns the events of a cell in order (text printed,
 //             results, pictures written, the error) for front-ends such as the Jupyter kernel;
-//             completions() and help() are the interactive prompt's (lang/help.h).
+//             call() runs a builtin on values; completions() and help() are the interactive
+//             prompt's (lang/help.h).
 //   Value     a value of the language (expression, element, list, ...) with its text, LaTeX
-//             and kind; Python operators and builtin calls go through the session.
+//             and kind; Python's operators are the language's operators on the values, every
+//             builtin is a method (v.inverse()); to_python(), float(), bool(), len(), [k]
+//             and iteration convert where exact.
 //   Compiled  a closed form compiled once, evaluated over NumPy arrays with the GIL released.
 //
-// The package's Python side (symrep/__init__.py) defines symrep.Error and the conversions
-// to Python numbers and SymPy.
+// The package's Python side (symrep/__init__.py) defines symrep.Error; symrep/_sympy.py
+// reads a value into SymPy (Value.to_sympy).
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <csignal>
 #include <cmath>
 #include <memory>
@@ -28,6 +33,7 @@
 #include "lang/help.h"
 #include "lang/interpreter.h"
 #include "lang/print_value.h"
+#include "lang/statement_clock.h"
 #include "lang/values.h"
 #include "syntax/lexer.h"
 #include "numeric/evaluator.h"
@@ -43,7 +49,6 @@ namespace {
 struct session_state {
     std::ostringstream out, err;
     lang::session s{out, err};
-    long next_temporary = 0;
 };
 using state_ptr = std::shared_ptr<session_state>;
 
@@ -82,9 +87,8 @@ private:
     struct sigaction old_ {};
 };
 
-// `located`: the code is the user's (errors carry its line and column); off for the statements
-// this module writes itself (operators, calls), whose places mean nothing to the user.
-py_value eval(const state_ptr& st, const std::string& code, bool located = true) {
+// The user's statements: errors carry their line and column.
+py_value eval(const state_ptr& st, const std::string& code) {
     lang::value v;
     std::string message, file, source;
     int line = 0, column = 0;
@@ -103,76 +107,104 @@ py_value eval(const state_ptr& st, const std::string& code, bool located = true)
             message = e.what();
         }
     }
-    if (!message.empty()) {
-        if (!located) line = 0;
-        raise_error(message, file, line, column, source);
-    }
+    if (!message.empty()) raise_error(message, file, line, column, source);
     return {std::move(v), st};
 }
 
-// Names for values in the session, removed again when the statement over them has run:
-// operations and calls are statements over such names.
-class temporaries {
-public:
-    explicit temporaries(state_ptr st) : st_(std::move(st)) {}
-    temporaries(const temporaries&) = delete;
-    temporaries& operator=(const temporaries&) = delete;
-    ~temporaries() {
-        for (const std::string& n : names_) st_->s.erase(n);
+// An operation of the engine on values (an operator, a builtin's body), run as a statement
+// runs (lang/statement_clock.h: Ctrl-C and the time limit stop it); its errors are
+// symrep.Error without a place (the operation is the module's, not a line of the user's),
+// with the message a statement gives (lang::message_of: symrep's verbatim, GiNaC's translated).
+template <class F>
+py_value engine_call(const state_ptr& st, F&& f) {
+    lang::value v;
+    std::string message;
+    {
+        interruptible guard;  // the GIL held, as in eval()
+        std::chrono::steady_clock::time_point start;
+        const lang::statement_clock clock(st->s.options().time_limit, start);
+        try {
+            v = f();
+        } catch (const std::exception& e) {
+            message = lang::message_of(e);
+        } catch (...) {
+            message = "unknown internal error";
+        }
     }
-    std::string operator()(const lang::value& v) {
-        names_.push_back("__py" + std::to_string(st_->next_temporary++));
-        st_->s.set(names_.back(), v);
-        return names_.back();
-    }
-
-private:
-    state_ptr st_;
-    std::vector<std::string> names_;
-};
+    if (!message.empty()) raise_error(message, "", 0, 0, "");
+    return {std::move(v), st};
+}
 
 // A Python argument as a language value: Value, bool, int, float, Fraction-like (numerator /
 // denominator), str (a string value), list or tuple (a list).
-lang::value from_python(const state_ptr& st, const py::handle& x);
+GiNaC::numeric integer_from_python(const py::handle& x, bool& ok) {
+    // str() of a Python int (or an integer type such as numpy's): an optional '-' and digits
+    const std::string text = py::str(x).cast<std::string>();
+    const std::size_t first = !text.empty() && text[0] == '-' ? 1 : 0;
+    ok = text.size() > first && text.find_first_not_of("0123456789", first) == std::string::npos;
+    return ok ? GiNaC::numeric(text.c_str()) : GiNaC::numeric(0);
+}
 
-lang::value number_from_text(const state_ptr& st, const std::string& text) { return st->s.evaluate(text); }
-
-lang::value from_python(const state_ptr& st, const py::handle& x) {
+lang::value from_python(const py::handle& x) {
     if (py::isinstance<py_value>(x)) return x.cast<const py_value&>().v;
     if (py::isinstance<py::bool_>(x)) return lang::value(x.cast<bool>());
-    if (py::isinstance<py::int_>(x)) return number_from_text(st, py::str(x).cast<std::string>());
+    bool ok = false;
+    if (py::isinstance<py::int_>(x)) return lang::value(GiNaC::ex(integer_from_python(x, ok)));
     if (py::isinstance<py::float_>(x)) {
         const double d = x.cast<double>();
         if (!std::isfinite(d)) throw symrep::type_error("not a finite number: " + py::repr(x).cast<std::string>());
         return lang::value(GiNaC::ex(GiNaC::numeric(d)));
     }
-    if (py::hasattr(x, "numerator") && py::hasattr(x, "denominator") && !py::isinstance<py::str>(x))
-        return number_from_text(st, "(" + py::str(x.attr("numerator")).cast<std::string>() + ")/(" +
-                                        py::str(x.attr("denominator")).cast<std::string>() + ")");
+    if (py::hasattr(x, "numerator") && py::hasattr(x, "denominator") && !py::isinstance<py::str>(x)) {
+        bool ok_d = false;
+        const GiNaC::numeric n = integer_from_python(x.attr("numerator"), ok),
+                             d = integer_from_python(x.attr("denominator"), ok_d);
+        if (ok && ok_d) {
+            if (d.is_zero()) throw symrep::domain_error("division by zero");
+            return lang::value(GiNaC::ex(n / d));
+        }
+    }
     if (py::isinstance<py::str>(x)) return lang::value(x.cast<std::string>());
     if (py::isinstance<py::list>(x) || py::isinstance<py::tuple>(x)) {
         lang::list l;
-        for (const py::handle& y : x) l.push_back(from_python(st, y));
+        for (const py::handle& y : x) l.push_back(from_python(y));
         return lang::value(std::move(l));
     }
     throw symrep::type_error("cannot pass a Python " + py::str(x.get_type().attr("__name__")).cast<std::string>() +
                              " to symrep (numbers, strings, lists and symrep values only)");
 }
 
-// name(args...) evaluated in the session
+// name(args...): the builtin's body on the values, after the checks the language makes of a
+// call (lang/evaluate.cpp, session::call): the name (lang/help.h's message, with the names
+// near it), the number of arguments (the same message as session::call's: the engine has no
+// call on values of its own yet).
 py_value call(const state_ptr& st, const std::string& name, const std::vector<lang::value>& args) {
-    temporaries tmp(st);
-    std::string code = name + "(";
-    for (std::size_t i = 0; i < args.size(); ++i) code += (i ? ", " : "") + tmp(args[i]);
-    return eval(st, code + ")", false);
+    return engine_call(st, [&]() -> lang::value {
+        const lang::builtin* b = st->s.builtins().find(name);
+        if (!b) throw symrep::type_error(lang::unknown_builtin_message(st->s.builtins(), name));
+        // ode reads its equation as written (x'' names a derivative), not as a value
+        if (b->name == "ode")
+            throw symrep::type_error(
+                "ode: the equation and the initial conditions are read as written (x'' names a derivative), "
+                "so a problem is made in a statement: s.eval(\"P := ode(...)\")");
+        if (args.size() < b->min_args || args.size() > b->max_args) {
+            std::string expected;
+            if (b->min_args == b->max_args) expected = std::to_string(b->min_args);
+            else if (b->max_args == SIZE_MAX) expected = "at least " + std::to_string(b->min_args);
+            else expected = std::to_string(b->min_args) + " to " + std::to_string(b->max_args);
+            throw symrep::type_error(b->name + ": expects " + expected + " argument" + (expected == "1" ? "" : "s") +
+                                     ", got " + std::to_string(args.size()) + " (usage: " + b->signature + ")");
+        }
+        return b->fn(args, st->s);
+    });
 }
 
+// a op b by the language's arithmetic (lang::binary_op), Python's operands in either order
 py_value binary(const py_value& a, const py::object& b, const std::string& op, bool reflected) {
-    const lang::value other = from_python(a.state, b);
-    temporaries tmp(a.state);
-    const std::string x = tmp(a.v), y = tmp(other);
-    return eval(a.state, reflected ? "(" + y + ") " + op + " (" + x + ")" : "(" + x + ") " + op + " (" + y + ")",
-                false);
+    const lang::value other = from_python(b);
+    return engine_call(a.state, [&] {
+        return reflected ? lang::binary_op(op, other, a.v) : lang::binary_op(op, a.v, other);
+    });
 }
 
 // --- the compiled fast path ---------------------------------------------------
@@ -225,16 +257,21 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
     try {
         lang::data_values d;
         if (!values.is_none()) {
-            // name = value pairs read by the language (vectors as [x, y, z])
+            // the relations name = value, as the language makes them (vectors as [x, y, z]); the
+            // name read as the language reads it (a symbol, or the value of a variable)
             const py::dict dv = values.cast<py::dict>();
-            temporaries tmp(st);
-            std::string list = "[";
-            bool first = true;
+            lang::list relations;
             for (const auto& [k, v] : dv) {
-                list += (first ? "" : ", ") + k.cast<std::string>() + " = " + tmp(from_python(st, v));
-                first = false;
+                const lang::value rhs = from_python(v);
+                try {
+                    relations.push_back(lang::binary_op("=", st->s.evaluate(k.cast<std::string>()), rhs));
+                } catch (const symrep::error&) {
+                    throw;
+                } catch (const std::exception& e) {
+                    throw symrep::error(lang::message_of(e));
+                }
             }
-            const lang::value vl = st->s.evaluate(list + "]");
+            const lang::value vl(std::move(relations));
             lang::builtin b;
             b.name = "compile";
             // floats taken as the exact doubles they are: GiNaC would otherwise fold w . w,
@@ -371,6 +408,97 @@ py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, evaluation
     return out;
 }
 
+// --- Value's Python protocol (conversions, truth, lists, builtins as methods) -------
+
+py::object python_int(const GiNaC::numeric& n) {
+    std::ostringstream o;
+    o << n;
+    return py::module_::import("builtins").attr("int")(o.str());
+}
+
+py::object python_fraction(const GiNaC::numeric& q) {
+    return py::module_::import("fractions").attr("Fraction")(python_int(q.numer()), python_int(q.denom()));
+}
+
+// the number as Python's exact or float number, or None when the value is no number
+py::object python_number(const lang::value& v) {
+    if (!v.is_ex() || !GiNaC::is_a<GiNaC::numeric>(v.as_ex())) return py::none();
+    const GiNaC::numeric x = GiNaC::ex_to<GiNaC::numeric>(v.as_ex());
+    if (x.is_integer()) return python_int(x);
+    if (x.is_rational()) return python_fraction(x);
+    if (x.is_real()) return py::float_(x.to_double());
+    const GiNaC::numeric re = x.real(), im = x.imag();
+    py::object complex = py::module_::import("builtins").attr("complex");
+    if (re.is_rational() && im.is_rational()) return complex(python_fraction(re), python_fraction(im));
+    return complex(re.to_double(), im.to_double());
+}
+
+py::object to_python(const py_value& v) {
+    if (v.v.is_bool()) return py::bool_(v.v.as_bool());
+    if (v.v.is_none()) return py::none();
+    if (v.v.is_string()) return py::str(v.v.as_string());
+    if (v.v.is_list()) {
+        py::list l;
+        for (const lang::value& x : v.v.as_list()) l.append(to_python(py_value{x, v.state}));
+        return l;
+    }
+    py::object n = python_number(v.v);
+    if (!n.is_none()) return n;
+    throw py::type_error(v.v.kind() + " has no exact Python number form: " + lang::print_value(v.v, false) +
+                         " (use .text, .latex or to_sympy())");
+}
+
+// float(v) for a real number, exact or not (evalf at the session's Digits)
+double to_float(const py_value& v) {
+    const bool number = v.v.is_ex() && GiNaC::is_a<GiNaC::numeric>(v.v.as_ex());
+    const lang::value x = number ? v.v : call(v.state, "evalf", {v.v}).v;
+    if (x.is_ex() && GiNaC::is_a<GiNaC::numeric>(x.as_ex()) && GiNaC::ex_to<GiNaC::numeric>(x.as_ex()).is_real()) {
+        const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(x.as_ex());
+        // a rational correctly rounded, as Python's float(Fraction) does
+        return r.is_rational() ? python_fraction(r).cast<double>() : r.to_double();
+    }
+    throw py::type_error("not a real number: " + lang::print_value(v.v, false));
+}
+
+bool to_bool(const py_value& v) {
+    // only a boolean has a truth value: `if s.eval("check(P, r)"):` must not be true for false
+    if (!v.v.is_bool())
+        throw py::type_error("the truth value of a symrep " + v.v.kind() +
+                             " is not defined (only booleans have one): " + lang::print_value(v.v, false));
+    return v.v.as_bool();
+}
+
+// the entries of a list value as Values (Python's list semantics for len, [k], slices, iter)
+py::list items(const py_value& v) {
+    if (!v.v.is_list()) throw py::type_error("a symrep " + v.v.kind() + " is not a list");
+    py::list l;
+    for (const lang::value& x : v.v.as_list()) l.append(py_value{x, v.state});
+    return l;
+}
+
+// v.name: the builtin name(v, ...) as a bound method, its help as the docstring
+py::object builtin_method(const py_value& v, const std::string& name) {
+    if (name.rfind("_", 0) == 0) throw py::attribute_error(name);
+    if (!v.state->s.builtins().find(name))
+        throw py::attribute_error("'" + name + "' is neither an attribute of a symrep value nor a builtin");
+    const std::string help = lang::help_text(v.state->s.builtins(), name);
+    py::options options;
+    options.disable_function_signatures();
+    return py::cpp_function(
+        [v, name](const py::args& args) {
+            std::vector<lang::value> a{v.v};
+            for (const py::handle& x : args) a.push_back(from_python(x));
+            return call(v.state, name, a);
+        },
+        py::name(name.c_str()), py::doc(help.empty() ? nullptr : help.c_str()));
+}
+
+std::vector<std::string> builtin_names(const state_ptr& st) {
+    std::vector<std::string> names;
+    for (const auto* b : st->s.builtins().all()) names.push_back(b->name);
+    return names;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_symrep, m) {
@@ -381,7 +509,19 @@ PYBIND11_MODULE(_symrep, m) {
     m.def("needs_more_input", &lang::needs_more_input, py::arg("text"),
           "True while the text has an open bracket or string: the statement goes on (syntax/lexer.h).");
 
-    py::class_<session_state, state_ptr>(m, "Session", "A symrep language session (variables, symbols, results).")
+    // the three classes first, their methods after: every signature then names the classes
+    // (symrep.Value, not the C++ type behind it)
+    py::class_<session_state, state_ptr> session_class(m, "Session",
+                                                       "A symrep language session (variables, symbols, results).");
+    py::class_<py_value> value_class(
+        m, "Value",
+        "A value of the symrep language (expression, element, list, ...): .text, .latex, .kind, Python's "
+        "operators, and every builtin as a method (v.inverse(), v.charpoly(X)); to_python() and to_sympy() "
+        "convert where exact.");
+    py::class_<compiled> compiled_class(m, "Compiled",
+                                        "A closed form compiled to a flat double program (numeric/evaluator.h).");
+
+    session_class
         .def(py::init([] { return std::make_shared<session_state>(); }))
         .def("eval", [](const state_ptr& st, const std::string& code) { return eval(st, code); }, py::arg("code"),
              "Runs the statements of `code` and returns the value of the last one (None for a "
@@ -440,15 +580,15 @@ PYBIND11_MODULE(_symrep, m) {
         .def(
             "set",
             [](const state_ptr& st, const std::string& name, const py::object& x) {
-                st->s.set(name, from_python(st, x));
+                st->s.set(name, from_python(x));
             },
             py::arg("name"), py::arg("value"), "Assigns a variable (a Value, number, string or list).")
-        .def("variables", [](const state_ptr& st) { return st->s.variable_names(); })
+        .def("variables", [](const state_ptr& st) { return st->s.variable_names(); }, "The names of the variables.")
         .def(
             "call",
             [](const state_ptr& st, const std::string& name, const py::args& args) {
                 std::vector<lang::value> a;
-                for (const py::handle& x : args) a.push_back(from_python(st, x));
+                for (const py::handle& x : args) a.push_back(from_python(x));
                 return call(st, name, a);
             },
             py::arg("name"), "Calls a builtin with Python arguments: s.call('inverse', w).")
@@ -470,21 +610,26 @@ PYBIND11_MODULE(_symrep, m) {
              [](const state_ptr& st, const std::string& name) {
                  return lang::unknown_builtin_message(st->s.builtins(), name);
              })
-        .def("builtin_names",
-             [](const state_ptr& st) {
-                 std::vector<std::string> names;
-                 for (const auto* b : st->s.builtins().all()) names.push_back(b->name);
-                 return names;
-             })
+        .def("builtin_names", &builtin_names, "The names of the builtins (each is also a method of Value).")
         .def(
             "compile",
-            [](const state_ptr& st, const py_value& e, const std::vector<std::string>& inputs, const py::object& values,
-               bool stable) { return compile(st, e, inputs, values, stable); },
+            [](const state_ptr& st, const py::object& expression, const py::object& inputs, const py::object& values,
+               bool stable) {
+                // the closed form: a Value, or statements whose last value is one; the inputs: names
+                const py_value e = py::isinstance<py::str>(expression) ? eval(st, expression.cast<std::string>())
+                                                                       : expression.cast<py_value>();
+                std::vector<std::string> names;
+                if (py::isinstance<py::str>(inputs)) names.push_back(inputs.cast<std::string>());
+                else
+                    for (const py::handle& x : inputs) names.push_back(x.cast<std::string>());
+                return compile(st, e, names, values, stable);
+            },
             py::arg("expression"), py::arg("inputs"), py::arg("values") = py::none(), py::arg("stable") = false,
-            "Compiles a closed form in the named inputs (scalars; a vector input is three "
-            "columns), the other symbols given by `values` (name -> number, [x, y, z] or Value).");
+            "Compiles a closed form (a Value, or statements whose last value is one) in the named "
+            "inputs (a name or a list of names: scalars; a vector input is three columns), the other "
+            "symbols given by `values` (name -> number, [x, y, z] or Value); see Compiled.__call__.");
 
-    py::class_<py_value>(m, "Value", "A value of the symrep language.")
+    value_class
         .def_property_readonly("text", [](const py_value& v) { return lang::print_value(v.v, false); })
         .def_property_readonly("latex", [](const py_value& v) { return lang::latex_value(v.v); })
         .def_property_readonly("kind", [](const py_value& v) { return v.v.kind(); })
@@ -492,41 +637,35 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__str__", [](const py_value& v) { return lang::print_value(v.v, false); })
         .def("__repr__", [](const py_value& v) { return "symrep.Value(" + lang::print_value(v.v, true) + ")"; })
         .def("_repr_latex_", [](const py_value& v) { return "$" + lang::latex_value(v.v) + "$"; })
-        .def("_number",
-             [](const py_value& v) -> py::object {
-                 // exact rationals as (numerator, denominator) strings, floats and complex as such
-                 if (!v.v.is_ex() || !GiNaC::is_a<GiNaC::numeric>(v.v.as_ex())) return py::none();
-                 const GiNaC::numeric x = GiNaC::ex_to<GiNaC::numeric>(v.v.as_ex());
-                 auto str = [](const GiNaC::numeric& n) {
-                     std::ostringstream o;
-                     o << n;
-                     return o.str();
-                 };
-                 if (x.is_rational())
-                     return py::make_tuple("rational", str(x.numer()), str(x.denom()));
-                 if (x.is_real()) return py::make_tuple("real", x.to_double());
-                 const GiNaC::numeric re = x.real(), im = x.imag();
-                 if (re.is_rational() && im.is_rational())
-                     return py::make_tuple("gaussian", str(re.numer()), str(re.denom()), str(im.numer()),
-                                           str(im.denom()));
-                 return py::make_tuple("complex", re.to_double(), im.to_double());
+        .def("to_python", &to_python,
+             "The value as a Python object where that is exact: bool, int, fractions.Fraction, float (a "
+             "floating-point value), complex, str, None, lists of these. A symbolic expression, an element or "
+             "a problem raises TypeError (use .text, .latex, to_sympy()).")
+        .def(
+            "to_sympy",
+            [](const py::object& self) { return py::module_::import("symrep._sympy").attr("to_sympy")(self); },
+            "The value as a SymPy object, read from its printed form and checked exact: the engine compares "
+            "the SymPy result printed back with the value (==) and refuses when they differ or cannot be "
+            "compared. Lists give lists; vector expressions (x, ., |v|) and elements have no SymPy form here "
+            "(TypeError).")
+        .def("__bool__", &to_bool, "Only a boolean has a truth value (TypeError otherwise).")
+        .def("__float__", &to_float, "float(v) for a real number, exact or not (evalf at the session's Digits).")
+        .def("__len__", [](const py_value& v) { return py::len(items(v)); })
+        .def("__getitem__",
+             [](const py_value& v, const py::object& k) -> py::object {
+                 const py::list l = items(v);
+                 return l[k];  // Python's indexing: negative indices, slices, IndexError
              })
-        .def("_items",
-             [](const py_value& v) -> py::object {
-                 if (!v.v.is_list()) return py::none();
-                 py::list l;
-                 for (const lang::value& x : v.v.as_list()) l.append(py_value{x, v.state});
-                 return l;
+        .def("__iter__", [](const py_value& v) { return py::iter(items(v)); })
+        .def("__getattr__", &builtin_method, py::arg("name"),
+             "v.name(args...) is the builtin name(v, args...): v.inverse(), v.charpoly(X).")
+        .def("__dir__",
+             [](const py::object& self) {
+                 // the attributes and every builtin: what an interactive prompt completes
+                 py::list names = py::module_::import("builtins").attr("object").attr("__dir__")(self);
+                 for (const std::string& n : builtin_names(self.cast<const py_value&>().state)) names.append(n);
+                 return names;
              })
-        .def("_bool", [](const py_value& v) -> py::object {
-            if (!v.v.is_bool()) return py::none();
-            return py::bool_(v.v.as_bool());
-        })
-        .def("_string", [](const py_value& v) -> py::object {
-            if (!v.v.is_string()) return py::none();
-            return py::str(v.v.as_string());
-        })
-        .def("_is_none", [](const py_value& v) { return v.v.is_none(); })
         .def("__add__", [](const py_value& a, const py::object& b) { return binary(a, b, "+", false); })
         .def("__radd__", [](const py_value& a, const py::object& b) { return binary(a, b, "+", true); })
         .def("__sub__", [](const py_value& a, const py::object& b) { return binary(a, b, "-", false); })
@@ -537,11 +676,7 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__rtruediv__", [](const py_value& a, const py::object& b) { return binary(a, b, "/", true); })
         .def("__pow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", false); })
         .def("__rpow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", true); })
-        .def("__neg__",
-             [](const py_value& a) {
-                 temporaries tmp(a.state);
-                 return eval(a.state, "-(" + tmp(a.v) + ")", false);
-             })
+        .def("__neg__", [](const py_value& a) { return engine_call(a.state, [&] { return lang::negate(a.v); }); })
         .def("cross", [](const py_value& a, const py::object& b) { return binary(a, b, "x", false); },
              "The cross product a x b (vectors).")
         .def("dot", [](const py_value& a, const py::object& b) { return binary(a, b, ".", false); },
@@ -552,14 +687,11 @@ PYBIND11_MODULE(_symrep, m) {
             if (b.is_none()) return py::bool_(false);
             lang::value other;
             try {
-                other = from_python(a.state, b);
+                other = from_python(b);
             } catch (const symrep::type_error&) {
                 return py::bool_(false);  // a dict, an object: no value of the language equals it
             }
-            temporaries tmp(a.state);
-            const std::string x = tmp(a.v), y = tmp(other);
-            const py_value r = eval(a.state, "(" + x + ") == (" + y + ")", false);
-            if (!r.v.is_bool()) throw symrep::type_error("== gave " + r.v.a_kind() + ", not a boolean");
+            const py_value r = engine_call(a.state, [&] { return lang::value(lang::values_equal(a.v, other)); });
             return py::bool_(r.v.as_bool());
         })
         .def("__hash__", [](const py_value& v) { return py::hash(py::str(lang::print_value(v.v, true))); })
@@ -567,12 +699,12 @@ PYBIND11_MODULE(_symrep, m) {
             "call",
             [](const py_value& v, const std::string& name, const py::args& args) {
                 std::vector<lang::value> a{v.v};
-                for (const py::handle& x : args) a.push_back(from_python(v.state, x));
+                for (const py::handle& x : args) a.push_back(from_python(x));
                 return call(v.state, name, a);
             },
             py::arg("name"), "name(self, args...): v.call('inverse') is inverse(v).");
 
-    py::class_<compiled>(m, "Compiled", "A closed form compiled to a flat double program (numeric/evaluator.h).")
+    compiled_class
         .def_property_readonly("inputs", [](const compiled& c) { return c.names; })
         .def_property_readonly("columns", [](const compiled& c) { return c.inputs; })
         .def_property_readonly("n_outputs", [](const compiled& c) { return c.n_outputs; })

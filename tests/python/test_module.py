@@ -200,3 +200,44 @@ def test_compiled_closed_form_over_numpy_arrays(s):
         h(t=np.zeros(3), w0=np.zeros(4), r0=[1, 2, 3])
     with pytest.raises(symrep.Error, match="compile"):
         s.compile(r, ["t"], {"w0": 1})  # w, r0, v0 have no values
+
+
+def test_classes_and_methods_are_the_modules_for_introspection():
+    # every method is the compiled module's (none patched on from Python), and every
+    # signature names the module's types, not the C++ types behind them
+    import pydoc
+    import types
+    for cls in (symrep.Session, symrep.Value, symrep.Compiled):
+        text = pydoc.render_doc(cls, renderer=pydoc.plaintext)
+        assert "anonymous" not in text and "py_value" not in text and "session_state" not in text, cls
+    for name in ("to_python", "to_sympy", "__bool__", "__float__", "__len__", "__getitem__", "__iter__",
+                 "__getattr__", "__dir__", "cross", "dot", "call"):
+        assert name in symrep.Value.__dict__, name
+        assert not isinstance(symrep.Value.__dict__[name], types.FunctionType), name
+        assert symrep.Value.__dict__[name].__doc__, name
+    assert not isinstance(symrep.Session.__dict__["compile"], types.FunctionType)
+    assert symrep.Session.eval.__doc__.startswith(
+        "eval(self: symrep._symrep.Session, code: str) -> symrep._symrep.Value")
+    assert "-> symrep._symrep.Compiled" in symrep.Session.compile.__doc__
+
+
+def test_calls_run_the_builtins_on_values(s):
+    k = s.eval("k")
+    # seq and sum substitute the values of k (the builtin's body, not k's name re-read)
+    assert s.call("sum", k**2, k, 1, 3).to_python() == 14
+    assert s.call("seq", k**2, k, 0, 3).to_python() == [0, 1, 4, 9]
+    assert s.call("seq", k**2, k, [Fraction(1, 2), 3]).to_python() == [Fraction(1, 4), 9]
+    assert (k**2).sum(k, 1, 3).to_python() == 14
+    # the language's checks of the name and the number of arguments, with its messages
+    with pytest.raises(symrep.Error, match=r"no function named 'inversee'; did you mean inverse") as e:
+        s.call("inversee", k)
+    assert e.value.line is None
+    with pytest.raises(symrep.Error, match=r"inverse: expects 1 argument, got 2 \(usage: inverse"):
+        s.call("inverse", k, k)
+    # ode reads its equation as written: made in a statement
+    with pytest.raises(symrep.Error, match=r"ode: .*read as written.*s\.eval"):
+        s.call("ode", s.eval("x = 1"), s.eval("y = 1"))
+    w = s.eval("element(multicomplex(1), [1, 2, 3, 4])")
+    assert "inverse" in dir(w) and "text" in dir(w)
+    assert w.inverse.__doc__ == s.help("inverse") and w.inverse.__name__ == "inverse"
+    assert [v for v in s.variables() if v.startswith("__")] == []
