@@ -120,29 +120,34 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
     const int max_steps = static_cast<int>(std::min(options.max_steps_between_outputs, int_max));
     state_type y = y0;
     const auto start = std::chrono::steady_clock::now();
-    // one call of integrate_times for every stepper (their types differ: a generic lambda)
-    const auto run = [&](auto&& stepper, double step) {
-        return odeint::integrate_times(stepper, system, y, all.begin(), all.end(), step, observer,
-                                       odeint::max_step_checker(max_steps));
-    };
     try {
         switch (options.stepper) {
-            case stepper_kind::rkf78:
-                res.steps = run(odeint::make_controlled(options.abs_tol, options.rel_tol,
-                                                        odeint::runge_kutta_fehlberg78<state_type>()),
-                                dt);
+            case stepper_kind::rkf78: {
+                auto stepper = odeint::make_controlled(options.abs_tol, options.rel_tol,
+                                                       odeint::runge_kutta_fehlberg78<state_type>());
+                res.steps = odeint::integrate_times(stepper, system, y, all.begin(), all.end(), dt, observer,
+                                                    odeint::max_step_checker(max_steps));
                 break;
-            case stepper_kind::bulirsch_stoer:
-                res.steps = run(odeint::bulirsch_stoer<state_type>(options.abs_tol, options.rel_tol), dt);
+            }
+            case stepper_kind::bulirsch_stoer: {
+                odeint::bulirsch_stoer<state_type> stepper(options.abs_tol, options.rel_tol);
+                res.steps = odeint::integrate_times(stepper, system, y, all.begin(), all.end(), dt, observer,
+                                                    odeint::max_step_checker(max_steps));
                 break;
-            case stepper_kind::dopri5:
-                res.steps = run(odeint::make_dense_output(options.abs_tol, options.rel_tol,
-                                                          odeint::runge_kutta_dopri5<state_type>()),
-                                dt);
+            }
+            case stepper_kind::dopri5: {
+                auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
+                                                         odeint::runge_kutta_dopri5<state_type>());
+                res.steps = odeint::integrate_times(stepper, system, y, all.begin(), all.end(), dt, observer,
+                                                    odeint::max_step_checker(max_steps));
                 break;
-            case stepper_kind::rk4:
-                res.steps = run(odeint::runge_kutta4<state_type>(), options.fixed_step);
+            }
+            case stepper_kind::rk4: {
+                odeint::runge_kutta4<state_type> stepper;
+                res.steps = odeint::integrate_times(stepper, system, y, all.begin(), all.end(), options.fixed_step,
+                                                    observer, odeint::max_step_checker(max_steps));
                 break;
+            }
         }
     } catch (const symrep::error&) {
         throw;
