@@ -117,11 +117,6 @@ std::vector<std::vector<std::size_t>> rank_sets(std::size_t N) {
     if (N >= 16) out.push_back({3, 5, 6, 9, N - 2});
     return out;
 }
-std::string rank_list(const std::vector<std::size_t>& r) {
-    std::string s;
-    for (std::size_t i = 0; i < r.size(); ++i) s += (i ? ", " : "") + std::to_string(r[i]);
-    return s;
-}
 
 // --- structure-constant products, written from the rules -----------------------------
 // (III.1.7) e_p e_q = (-1)^{<p,q>} e_{p xor q}

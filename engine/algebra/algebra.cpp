@@ -150,4 +150,10 @@ void algebra::check_size(const coeffs& a, const char* what) const {
                             " coordinates were given");
 }
 
+std::string rank_list(const std::vector<std::size_t>& ranks) {
+    std::string s;
+    for (std::size_t i = 0; i < ranks.size(); ++i) s += (i ? ", " : "") + std::to_string(ranks[i]);
+    return s;
+}
+
 }  // namespace symrep

@@ -23,6 +23,7 @@
 #include <functional>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <string>
 #include <vector>
@@ -158,6 +159,16 @@ protected:
     bool takes_double_path(std::initializer_list<const coeffs*> operands, const char* what) const;
     /// Throws size_error naming the exact limit when !exact().
     void require_exact(const char* what) const;
+    /// exp(w t) on the double path, computed by `double_exp` from the doubles of w and t, when
+    /// t is a real number and w and t take that path; nullopt for the exact path. A symbolic t
+    /// in a float-only algebra (!exact()) is refused by name (size_error).
+    std::optional<coeffs> exp_on_double_path(
+        const coeffs& w, const GiNaC::ex& t,
+        const std::function<std::vector<double>(const std::vector<double>&, double)>& double_exp) const;
 };
+
+/// The ranks of a zero divisor's vanishing idempotent components as text, "0, 3, 5" (the
+/// messages of zero_divisor_error).
+std::string rank_list(const std::vector<std::size_t>& ranks);
 
 }  // namespace symrep

@@ -41,6 +41,8 @@ __attribute__((target("avx512f"))) __m512d _ZGVeN8v_sin(__m512d);
 }
 namespace {
 
+// One kernel per vector width: alike in shape, but the intrinsics, the glibc vector entry
+// points and the target attributes differ (a template cannot choose them).
 // m is a multiple of the width except in the last block: the tail goes through libm.
 void sse_kernel(const double* a, const double* b, double* e, double* c, double* s, std::size_t m) {
     std::size_t k = 0;

@@ -60,5 +60,15 @@ void algebra::require_exact(const char* what) const {
     if (!exact()) double_path::refuse_exact(name(), exact_limit(), what);
 }
 
+std::optional<coeffs> algebra::exp_on_double_path(
+    const coeffs& w, const GiNaC::ex& t,
+    const std::function<std::vector<double>(const std::vector<double>&, double)>& double_exp) const {
+    const coeffs tc{t};
+    if (double_path::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
+        return double_path::from_doubles(double_exp(double_path::to_doubles(w), double_path::to_doubles(tc)[0]));
+    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
+    return std::nullopt;
+}
+
 }  // namespace symrep
 

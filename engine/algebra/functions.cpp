@@ -34,10 +34,6 @@ namespace {
 
 using root = polynomial_root;
 
-std::string str(const ex& e) { return message_text(e); }
-
-int sign_of(const ex& x) { return sign_generic(x); }
-
 // The roots of q (monic in X) with multiplicities, from its factorization over Q
 // (scalar/polynomial_roots.h: the quadratic formula and Cardano's form).
 std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::string& where) {
@@ -46,7 +42,9 @@ std::vector<root> roots_of(const ex& q, const GiNaC::symbol& X, const std::strin
 
 // e with each power of a non-integer exponent m/k written R^m, R a real symbol standing for
 // base^(1/k), and each function call (exp, cos, ...) a real symbol (recorded in back:
-// symbol -> value).
+// symbol -> value). Not atomize (scalar/polynomial_roots.h), which it resembles: here the
+// symbols are real, constants such as pi stay, and base^(m/k) keeps its power m of one symbol
+// per base^(1/k), so that the powers of one radical meet.
 ex radicals_as_symbols(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, GiNaC::exmap& back) {
     const auto symbol_for = [&](const ex& x) -> ex {
         auto it = seen.find(x);
@@ -70,13 +68,6 @@ ex radicals_as_symbols(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen, G
         return GiNaC::mul(ops);
     }
     return symbol_for(e);
-}
-
-// Falling factorial k (k-1) ... (k-j+1).
-long falling(long k, unsigned j) {
-    long r = 1;
-    for (unsigned i = 0; i < j; ++i) r *= (k - long(i));
-    return r;
 }
 
 }  // namespace
@@ -161,7 +152,7 @@ coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const 
                 f.value(r.re, r.im, j, fre, fim);
                 std::vector<ex> row_re(n, ex(0)), row_im(n, ex(0));
                 for (int k = int(j); k < n; ++k) {  // p^{(j)}(z) = sum_k c_k k!/(k-j)! z^{k-j}
-                    const long ff = falling(k, j);
+                    const long ff = falling_factorial(k, j);
                     row_re[k] = ff * zp[k - j].re;
                     row_im[k] = ff * zp[k - j].im;
                 }
@@ -175,8 +166,8 @@ coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const 
         }
         auto c = solve_linear(std::move(A), std::move(b));
         if (!c)
-            throw closed_form_error(where + ": the Hermite interpolation conditions at the roots of " + str(q) +
-                                    " are singular (roots not distinct for these values)");
+            throw closed_form_error(where + ": the Hermite interpolation conditions at the roots of " +
+                                    message_text(q) + " are singular (roots not distinct for these values)");
         return *c;
     };
 
@@ -189,8 +180,9 @@ coeffs algebra::apply_function(const coeffs& w, const scalar_function& f) const 
         }
         if (r.multiplicity > 1)
             // Hermite's conditions on Cardano's radicals: refused at once
-            throw closed_form_error(where + ": the cubic factor " + str(r.factor) + " of the minimal polynomial " +
-                                    "is repeated (multiplicity " + std::to_string(r.multiplicity) +
+            throw closed_form_error(where + ": the cubic factor " + message_text(r.factor) +
+                                    " of the minimal polynomial " + "is repeated (multiplicity " +
+                                    std::to_string(r.multiplicity) +
                                     "); Hermite interpolation on Cardano's radicals is not done here");
         bool seen_factor = false;
         for (const ex& F : cubics) seen_factor = seen_factor || F.is_equal(r.factor);
@@ -307,13 +299,13 @@ coeffs algebra::log(const coeffs& w) const {
     const std::string nm = name();
     f.value = [nm](const ex& re, const ex& im, unsigned j, ex& out_re, ex& out_im) {
         if (im.is_zero()) {
-            const int s = sign_of(re);
+            const int s = sign_generic(re);
             if (s == 0)
                 throw zero_divisor_error("log of a zero divisor in " + nm +
                                              ": 0 is a root of its minimal polynomial (II.1.22)",
                                          {});
             if (s == -1)
-                throw domain_error("no real logarithm in " + nm + ": root " + str(re) +
+                throw domain_error("no real logarithm in " + nm + ": root " + message_text(re) +
                                    " of the minimal polynomial is negative");
             // s == 2 (symbolic): the result holds where the root is positive
             if (j == 0) out_re = GiNaC::log(re);

@@ -20,12 +20,6 @@ namespace dp = double_path;
 
 namespace {
 
-std::string rank_list(const std::vector<std::size_t>& r) {
-    std::ostringstream os;
-    for (std::size_t k = 0; k < r.size(); ++k) os << (k ? ", " : "") << r[k];
-    return os.str();
-}
-
 // Product of the factors, multiplied pairwise (a balanced product tree) and
 // expanded at each level. The guard bounds the result by its monomials when the
 // factors are polynomials (2^n quadratics in X: 2^(n+1) + 1 terms), and each
@@ -203,18 +197,25 @@ ex multicomplex::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
     return expanded_product(std::move(f));
 }
 
+namespace {
+// The ranks p whose idempotent component a_p + i b_p is 0 (III.1.55), decided exactly
+// (is_nonzero_generic: refused where undecidable, never guessed).
+std::vector<std::size_t> vanishing_components(const std::vector<cplx<ex>>& c, const std::string& algebra_name) {
+    std::vector<std::size_t> ranks;
+    for (std::size_t p = 0; p < c.size(); ++p)
+        if (!is_nonzero_generic(c[p].re, algebra_name + ": an idempotent component") &&
+            !is_nonzero_generic(c[p].im, algebra_name + ": an idempotent component"))
+            ranks.push_back(p);
+    return ranks;
+}
+}  // namespace
+
 // (III.1.55)
 std::vector<std::size_t> multicomplex::zero_divisor_ranks(const coeffs& w) const {
     check_size(w, "zero divisor ranks");
     // (III.1.55) in doubles: |c_p| <= 1e-12 max |c_q| (multicomplex_d::default_rel_tol)
     if (takes_double_path({&w}, "zero divisor ranks")) return multicomplex_d(n_).zero_divisor_ranks(dp::to_doubles(w));
-    std::vector<std::size_t> r;
-    const auto c = component_pairs(w);
-    for (std::size_t p = 0; p < c.size(); ++p)
-        if (!is_nonzero_generic(c[p].re, name() + ": an idempotent component") &&
-            !is_nonzero_generic(c[p].im, name() + ": an idempotent component"))
-            r.push_back(p);
-    return r;
+    return vanishing_components(component_pairs(w), name());
 }
 
 bool multicomplex::is_zero_divisor(const coeffs& w) const { return !zero_divisor_ranks(w).empty(); }
@@ -234,11 +235,7 @@ coeffs multicomplex::inverse(const coeffs& w) const {
     check_size(w, "inverse");
     if (takes_double_path({&w}, "inverse")) return dp::from_doubles(multicomplex_d(n_).inverse(dp::to_doubles(w)));
     auto c = component_pairs(w);
-    std::vector<std::size_t> ranks;
-    for (std::size_t p = 0; p < c.size(); ++p)
-        if (!is_nonzero_generic(c[p].re, name() + ": an idempotent component") &&
-            !is_nonzero_generic(c[p].im, name() + ": an idempotent component"))
-            ranks.push_back(p);
+    std::vector<std::size_t> ranks = vanishing_components(c, name());
     if (!ranks.empty()) throw_zero_divisor(*this, "inverse", std::move(ranks));
     for (auto& z : c) z = multicomplex_component_inverse<ex>(z.re, z.im);
     return from_component_pairs(c);
@@ -247,25 +244,20 @@ coeffs multicomplex::inverse(const coeffs& w) const {
 // (III.1.45-52)
 coeffs multicomplex::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
-    const coeffs tc{t};
-    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
-        return dp::from_doubles(multicomplex_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
-    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
+    const auto on_doubles = [&](const std::vector<double>& x, double s) { return multicomplex_d(n_).exp(x, s); };
+    if (auto d = exp_on_double_path(w, t, on_doubles)) return *std::move(d);
     auto c = component_pairs(w);
     for (auto& z : c) z = multicomplex_component_exp<ex>(z.re, z.im, t);
     return from_component_pairs(c);
 }
 
-// (III.1.53)
+// (III.1.53). Steps as in inverse() (the double path, the zero-divisor ranks, a map of the
+// components); only the map differs.
 coeffs multicomplex::log(const coeffs& w) const {
     check_size(w, "log");
     if (takes_double_path({&w}, "log")) return dp::from_doubles(multicomplex_d(n_).log(dp::to_doubles(w)));
     auto c = component_pairs(w);
-    std::vector<std::size_t> ranks;
-    for (std::size_t p = 0; p < c.size(); ++p)
-        if (!is_nonzero_generic(c[p].re, name() + ": an idempotent component") &&
-            !is_nonzero_generic(c[p].im, name() + ": an idempotent component"))
-            ranks.push_back(p);
+    std::vector<std::size_t> ranks = vanishing_components(c, name());
     if (!ranks.empty()) throw_zero_divisor(*this, "logarithm", std::move(ranks));
     for (auto& z : c) z = multicomplex_component_log<ex>(z.re, z.im);
     return from_component_pairs(c);

@@ -44,6 +44,8 @@
 
 namespace symrep {
 
+// The interface of algebra (algebra/algebra.h), declared as every family declares it: the
+// declarations look alike, the fast paths behind them differ.
 class multicomplex final : public algebra {
 public:
     /// Largest n of the exact path (see the header comment for the reason).

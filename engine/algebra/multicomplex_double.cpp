@@ -173,7 +173,8 @@ multicomplex_d::vector multicomplex_d::exp(const vector& w, double t) const {
     return multicomplex_from_components_inplace<double>(c, n_);
 }
 
-// (III.1.53)
+// (III.1.53). Steps as in inverse() (the zero-divisor ranks, then a map of the
+// components); only the map differs.
 multicomplex_d::vector multicomplex_d::log(const vector& w, double rel_tol) const {
     auto c = idempotent_components(w);
     auto ranks = vanishing_ranks(c, rel_tol);

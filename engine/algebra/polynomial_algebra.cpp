@@ -13,7 +13,6 @@ using GiNaC::ex;
 namespace {
 // through the canonical printer (message_text): GiNaC's own output orders terms by its
 // history-dependent term order, (k+m*w^2) in one session and (m*w^2+k) in another
-std::string str(const ex& e) { return message_text(e, 100000); }
 
 /// Largest integer exponent in e (0 when none): checked before degree(), which
 /// reads exponents as machine integers.
@@ -30,21 +29,24 @@ polynomial_algebra::polynomial_algebra(const ex& p, const GiNaC::symbol& X) : X_
     const auto check_degree = [&](const ex& e) {
         const GiNaC::numeric d = max_exponent(e, X);
         if (d > GiNaC::numeric(long(max_degree)))
-            throw size_error("polynomial algebra: the polynomial has degree " + str(d) + " in " + str(X) +
-                             ", more than the limit " + std::to_string(max_degree));
+            throw size_error("polynomial algebra: the polynomial has degree " + message_text(d, text_limit::name) +
+                             " in " + message_text(X, text_limit::name) + ", more than the limit " +
+                             std::to_string(max_degree));
     };
     check_degree(p);
     const ex q = GiNaC::expand(p);
     if (!q.is_polynomial(X))
-        throw algebra_error("polynomial algebra: " + str(p) + " is not a polynomial in " + str(X));
+        throw algebra_error("polynomial algebra: " + message_text(p, text_limit::name) + " is not a polynomial in " +
+                            message_text(X, text_limit::name));
     check_degree(q);
     const int n = q.degree(X);
     if (n < 1)
-        throw algebra_error("polynomial algebra: " + str(p) + " has degree 0 in " + str(X) +
-                            "; P_n needs degree n >= 1");
+        throw algebra_error("polynomial algebra: " + message_text(p, text_limit::name) + " has degree 0 in " +
+                            message_text(X, text_limit::name) + "; P_n needs degree n >= 1");
     if (!is_zero_scalar(q.coeff(X, n) - 1))
-        throw algebra_error("polynomial algebra: " + str(p) + " is not monic (leading coefficient " +
-                            str(q.coeff(X, n)) + "); divide it by its leading coefficient");
+        throw algebra_error("polynomial algebra: " + message_text(p, text_limit::name) +
+                            " is not monic (leading coefficient " + message_text(q.coeff(X, n), text_limit::name) +
+                            "); divide it by its leading coefficient");
     n_ = std::size_t(n);
     p_ = q;
     low_.resize(n_);
@@ -56,11 +58,11 @@ polynomial_algebra::polynomial_algebra(const ex& p, const GiNaC::symbol& X) : X_
     for (int k = n - 1; k >= 0; --k) {
         const ex c = low_[k];
         if (c.is_zero()) continue;
-        std::string cs = str(c);
+        std::string cs = message_text(c, text_limit::name);
         // negative number, or a product with a negative numeric factor (-2*a)
         const ex num = GiNaC::is_a<GiNaC::mul>(c) ? c.op(c.nops() - 1) : c;
         const bool neg = GiNaC::is_a<GiNaC::numeric>(num) && GiNaC::ex_to<GiNaC::numeric>(num).is_negative();
-        if (neg) cs = str(-c);
+        if (neg) cs = message_text(-c, text_limit::name);
         os << (neg ? " - " : " + ");
         const bool atomic = !GiNaC::is_a<GiNaC::add>(c);
         if (k == 0) {

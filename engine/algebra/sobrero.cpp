@@ -148,10 +148,8 @@ coeffs sobrero::inverse(const coeffs& w) const {
 // exp(w t) = e^{xi_0 t} sum_{k=0}^{n} N^k t^k / k!, a closed form in t.
 coeffs sobrero::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
-    const coeffs tc{t};
-    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
-        return dp::from_doubles(sobrero_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
-    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
+    const auto on_doubles = [&](const std::vector<double>& x, double s) { return sobrero_d(n_).exp(x, s); };
+    if (auto d = exp_on_double_path(w, t, on_doubles)) return *std::move(d);
     return sm::to_coords(sm::exp(sm::from_coords(w), t));
 }
 

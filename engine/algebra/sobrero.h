@@ -30,6 +30,8 @@
 
 namespace symrep {
 
+// The interface of algebra (algebra/algebra.h), declared as every family declares it: the
+// declarations look alike, the fast paths behind them differ.
 class sobrero : public algebra {
 public:
     /// Largest n accepted by make() for the exact algebra.

@@ -101,16 +101,24 @@ coeffs walsh::from_idempotent_components(const std::vector<ex>& a) const {
     return wm::from_components(a);
 }
 
+namespace {
+// The ranks p with a_p = 0 (III.3.31), decided exactly (is_nonzero_generic: refused where
+// undecidable, never guessed).
+std::vector<std::size_t> vanishing_components(const std::vector<ex>& a, const std::string& algebra_name) {
+    std::vector<std::size_t> r;
+    for (std::size_t p = 0; p < a.size(); ++p)
+        if (!is_nonzero_generic(a[p], algebra_name + ": an idempotent component")) r.push_back(p);
+    return r;
+}
+}  // namespace
+
 // (III.3.31-32) the ranks p with a_p = 0.
 std::vector<std::size_t> walsh::zero_divisor_ranks(const coeffs& w) const {
     check_size(w, "zero divisor ranks");
     // (III.3.31) in doubles: |a_p| <= 1e-12 max |a_q|
     if (takes_double_path({&w}, "zero divisor ranks")) return walsh_d(n_).zero_divisor_ranks(dp::to_doubles(w));
     const std::vector<ex> a = idempotent_components(w);
-    std::vector<std::size_t> r;
-    for (std::size_t p = 0; p < a.size(); ++p)
-        if (!is_nonzero_generic(a[p], name() + ": an idempotent component")) r.push_back(p);
-    return r;
+    return vanishing_components(a, name());
 }
 
 // (III.3.30)
@@ -151,15 +159,10 @@ ex walsh::minpoly(const coeffs& w, const GiNaC::symbol& X) const {
 }
 
 namespace {
-std::string list_ranks(const std::vector<std::size_t>& r) {
-    std::string s;
-    for (std::size_t i = 0; i < r.size(); ++i) s += (i ? ", " : "") + std::to_string(r[i]);
-    return s;
-}
 [[noreturn]] void throw_zero_divisor(const std::string& algebra_name, const char* what,
                                      const std::vector<std::size_t>& r) {
     throw zero_divisor_error(std::string(what) + " of a zero divisor in " + algebra_name +
-                                 ": the idempotent components of rank " + list_ranks(r) +
+                                 ": the idempotent components of rank " + rank_list(r) +
                                  " vanish (III.3.31), so w e_p = 0 for these p (Thm III.3.2.3)",
                              r);
 }
@@ -170,9 +173,7 @@ coeffs walsh::inverse(const coeffs& w) const {
     check_size(w, "inverse");
     if (takes_double_path({&w}, "inverse")) return dp::from_doubles(walsh_d(n_).inverse(dp::to_doubles(w)));
     std::vector<ex> a = idempotent_components(w);
-    std::vector<std::size_t> r;
-    for (std::size_t p = 0; p < a.size(); ++p)
-        if (!is_nonzero_generic(a[p], name() + ": an idempotent component")) r.push_back(p);
+    const std::vector<std::size_t> r = vanishing_components(a, name());
     if (!r.empty()) throw_zero_divisor(name(), "inverse", r);
     for (auto& x : a) x = tidy(1 / x);
     return wm::from_components(std::move(a));
@@ -181,10 +182,8 @@ coeffs walsh::inverse(const coeffs& w) const {
 // (III.3.44) exp(f t) = 2^{-n} sum_p [sum_k (-1)^{<p,k>} e^{a_k t}] w_p.
 coeffs walsh::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
-    const coeffs tc{t};
-    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
-        return dp::from_doubles(walsh_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
-    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
+    const auto on_doubles = [&](const std::vector<double>& x, double s) { return walsh_d(n_).exp(x, s); };
+    if (auto d = exp_on_double_path(w, t, on_doubles)) return *std::move(d);
     std::vector<ex> a = idempotent_components(w);
     for (auto& x : a) x = exp_scalar(tidy(x * t));
     return wm::from_components(std::move(a));
@@ -208,13 +207,12 @@ int positive_root(const ex& a) {
 }  // namespace
 
 // Thm III.3.3.1 (III.3.39-40): g_p = 2^{-n} sum_k (-1)^{<p,k>} ln a_k, every a_k > 0.
+// Steps as in inverse() (the double path, the zero-divisor ranks), then the signs of the a_k.
 coeffs walsh::log(const coeffs& w) const {
     check_size(w, "log");
     if (takes_double_path({&w}, "log")) return dp::from_doubles(walsh_d(n_).log(dp::to_doubles(w)));
     std::vector<ex> a = idempotent_components(w);
-    std::vector<std::size_t> r;
-    for (std::size_t p = 0; p < a.size(); ++p)
-        if (!is_nonzero_generic(a[p], name() + ": an idempotent component")) r.push_back(p);
+    const std::vector<std::size_t> r = vanishing_components(a, name());
     if (!r.empty()) throw_zero_divisor(name(), "log", r);
     for (std::size_t p = 0; p < a.size(); ++p) {
         const int s = positive_root(a[p]);

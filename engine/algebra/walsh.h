@@ -19,6 +19,8 @@
 
 namespace symrep {
 
+// The interface of algebra (algebra/algebra.h), declared as every family declares it: the
+// declarations look alike, the fast paths behind them differ.
 class walsh : public algebra {
 public:
     /// Largest n accepted for the exact algebra (order 2^n).

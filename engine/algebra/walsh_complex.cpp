@@ -117,10 +117,8 @@ std::vector<std::size_t> ranks_of(const std::vector<cx>& y) {
 
 [[noreturn]] void throw_zero_divisor(const std::string& algebra_name, const char* what,
                                      const std::vector<std::size_t>& r) {
-    std::string s;
-    for (std::size_t i = 0; i < r.size(); ++i) s += (i ? ", " : "") + std::to_string(r[i]);
     throw zero_divisor_error(std::string(what) + " of a zero divisor in " + algebra_name +
-                                 ": the idempotent components c_p + i0 d_p of rank " + s +
+                                 ": the idempotent components c_p + i0 d_p of rank " + rank_list(r) +
                                  " vanish (rho_p = 0 in III.3.64), so w e_p = 0 for these p",
                              r);
 }
@@ -188,10 +186,8 @@ coeffs walsh_complex::inverse(const coeffs& w) const {
 // exp(w t): y_p -> e^{c_p t} (cos d_p t + i0 sin d_p t) (III.3.44 on complex components).
 coeffs walsh_complex::exp(const coeffs& w, const ex& t) const {
     check_size(w, "exp");
-    const coeffs tc{t};
-    if (dp::is_real_number(t) && takes_double_path({&w, &tc}, "exp"))
-        return dp::from_doubles(walsh_complex_d(n_).exp(dp::to_doubles(w), dp::to_doubles(tc)[0]));
-    if (!exact()) takes_double_path({&w, &tc}, "exp");  // a symbolic t: refused by name
+    const auto on_doubles = [&](const std::vector<double>& x, double s) { return walsh_complex_d(n_).exp(x, s); };
+    if (auto d = exp_on_double_path(w, t, on_doubles)) return *std::move(d);
     std::vector<cx> y = wm::complex_components(w);
     for (auto& z : y) {
         const ex e = exp_scalar(tidy(z.re * t));
@@ -200,7 +196,8 @@ coeffs walsh_complex::exp(const coeffs& w, const ex& t) const {
     return wm::from_complex_components(std::move(y));
 }
 
-// (III.3.64-67) u = sum_p (ln rho_p e_p + theta_p i0 e_p).
+// (III.3.64-67) u = sum_p (ln rho_p e_p + theta_p i0 e_p). Steps as in inverse() (the
+// double path, the zero-divisor ranks, a map of the components); only the map differs.
 coeffs walsh_complex::log(const coeffs& w) const {
     check_size(w, "log");
     if (takes_double_path({&w}, "log")) return dp::from_doubles(walsh_complex_d(n_).log(dp::to_doubles(w)));

@@ -18,6 +18,8 @@
 
 namespace symrep {
 
+// The interface of algebra (algebra/algebra.h), declared as every family declares it: the
+// declarations look alike, the fast paths behind them differ.
 class walsh_complex : public algebra {
 public:
     /// Largest n accepted for the exact algebra (real order 2^{n+1}).

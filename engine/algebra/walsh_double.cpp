@@ -40,6 +40,12 @@ void dim_check(std::size_t got, std::size_t want, const std::string& alg, const 
                             std::to_string(want) + ", but " + std::to_string(got) +
                             " coordinates were given");
 }
+// The coordinates of basis element k of an algebra of dimension dim.
+std::vector<double> basis_element(std::size_t dim, std::size_t k) {
+    std::vector<double> u(dim, 0.0);
+    u[k] = 1;
+    return u;
+}
 }  // namespace
 
 // ---------------------------------------------------------------- walsh_d
@@ -50,16 +56,12 @@ void walsh_d::check(const std::vector<double>& f, const char* what) const {
 }
 
 std::vector<double> walsh_d::unit() const {
-    std::vector<double> u(dim(), 0.0);
-    u[0] = 1;
-    return u;
+    return basis_element(dim(), 0);
 }
 
 std::vector<double> walsh_d::generator(std::size_t k) const {
     if (k >= n_) throw domain_error("walsh_d: there is no generator u_" + std::to_string(k));
-    std::vector<double> u(dim(), 0.0);
-    u[std::size_t(1) << (n_ - 1 - k)] = 1;
-    return u;
+    return basis_element(dim(), std::size_t(1) << (n_ - 1 - k));
 }
 
 std::vector<double> walsh_d::components(const std::vector<double>& f) const {
@@ -140,22 +142,16 @@ void walsh_complex_d::check(const std::vector<double>& w, const char* what) cons
 }
 
 std::vector<double> walsh_complex_d::unit() const {
-    std::vector<double> u(dim(), 0.0);
-    u[0] = 1;
-    return u;
+    return basis_element(dim(), 0);
 }
 
 std::vector<double> walsh_complex_d::generator(std::size_t k) const {
     if (k >= n_) throw domain_error("walsh_complex_d: there is no generator u_" + std::to_string(k));
-    std::vector<double> u(dim(), 0.0);
-    u[std::size_t(1) << (n_ - 1 - k)] = 1;
-    return u;
+    return basis_element(dim(), std::size_t(1) << (n_ - 1 - k));
 }
 
 std::vector<double> walsh_complex_d::i0() const {
-    std::vector<double> u(dim(), 0.0);
-    u[size()] = 1;
-    return u;
+    return basis_element(dim(), size());
 }
 
 std::vector<std::complex<double>> walsh_complex_d::components(const std::vector<double>& w) const {
@@ -228,9 +224,7 @@ void sobrero_d::check(const std::vector<double>& w, const char* what) const {
 }
 
 std::vector<double> sobrero_d::unit() const {
-    std::vector<double> u(dim(), 0.0);
-    u[0] = 1;
-    return u;
+    return basis_element(dim(), 0);
 }
 
 std::vector<double> sobrero_d::multiply(const std::vector<double>& a, const std::vector<double>& b) const {

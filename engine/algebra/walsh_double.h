@@ -21,6 +21,8 @@
 namespace symrep {
 
 /// Double-precision Walsh algebra W of order 2^n.
+// The double-precision classes share their declarations, not their operations (the
+// fast transforms differ: fwht, complex fwht, truncated convolution).
 class walsh_d {
 public:
     static constexpr unsigned max_n = 26;

@@ -151,7 +151,7 @@ void breakpoints(const GiNaC::ex& f, const GiNaC::symbol& t, std::vector<GiNaC::
         };
         if (!u.is_polynomial(t) || u.degree(t) != 1 || !real(a) || !real(b))
             throw domain_error(std::string(exact ? "exact Walsh coefficients: " : "a signal with jumps: ") + name + "(" +
-                               message_text(it->op(0), 80) + ") is not of an argument a t + b with " +
+                               message_text(it->op(0), text_limit::fragment) + ") is not of an argument a t + b with " +
                                (exact ? "rational" : "real") + " a != 0 and b");
         out.push_back(GiNaC::ex_to<GiNaC::numeric>(-b / a));
     }

@@ -30,32 +30,29 @@ using GiNaC::numeric;
 
 value session::eval(const node& n) {
     if (interrupt_requested().load(std::memory_order_relaxed))
-        throw script_error("interrupted", {files_.empty() ? "<string>" : files_.back(), n.line, n.column});
+        throw script_error("interrupted", {current_file(), n.line, n.column});
     if (opts_.time_limit > 0 && (++ticks_ & 63) == 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - statement_start_).count() > opts_.time_limit) {
         std::ostringstream os;
         os << "time limit: the statement ran longer than " << opts_.time_limit << " s (--time-limit)";
-        throw script_error(os.str(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column});
+        throw script_error(os.str(), {current_file(), n.line, n.column});
     }
     try {
         return eval_inner(n);
     } catch (const script_error&) {
         throw;
     } catch (const allocation_interrupted& e) {  // Ctrl-C or the time limit, inside a library call
-        throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+        throw script_error(e.what(), {current_file(), n.line, n.column},
                            std::make_exception_ptr(symrep::error(e.what())));
     } catch (const std::bad_alloc&) {
-        throw script_error(out_of_memory_message, {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
+        throw script_error(out_of_memory_message, {current_file(), n.line, n.column},
                            std::make_exception_ptr(size_error(out_of_memory_message)));
     } catch (const symrep::error& e) {
-        throw script_error(e.what(), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
-                           std::current_exception());
+        throw script_error(e.what(), {current_file(), n.line, n.column}, std::current_exception());
     } catch (const std::exception& e) {
-        throw script_error(clear_message(e.what()), {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
-                           std::current_exception());
+        throw script_error(clear_message(e.what()), {current_file(), n.line, n.column}, std::current_exception());
     } catch (...) {
-        throw script_error("unknown internal error", {files_.empty() ? "<string>" : files_.back(), n.line, n.column},
-                           std::current_exception());
+        throw script_error("unknown internal error", {current_file(), n.line, n.column}, std::current_exception());
     }
 }
 
@@ -309,8 +306,7 @@ value session::eval_inner(const node& n) {
                 try {
                     acc = binary_op(std::string(1, n.text[i]), acc, b);
                 } catch (const std::exception& e) {
-                    throw script_error(message_of(e), {files_.empty() ? "<string>" : files_.back(), n.op_pos[i].first,
-                                                  n.op_pos[i].second},
+                    throw script_error(message_of(e), {current_file(), n.op_pos[i].first, n.op_pos[i].second},
                                        std::current_exception());
                 }
             }

@@ -392,14 +392,14 @@ void session::declare(const node& n) {
     for (const auto& k : n.kids) {
         if (get(k->text))
             throw script_error("cannot declare '" + k->text + "': it is a variable (assigned with :=)",
-                               {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+                               {current_file(), k->line, k->column});
         if (n.text == "vector") {
             if (!k->kids.empty()) {  // vector w(t): a vector function of t
                 try {
                     register_vector_function(symbol(k->text), symbol("t"));
                 } catch (const type_error& e) {
                     throw script_error(std::string("cannot declare '") + k->text + "(t)': " + e.what(),
-                                       {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+                                       {current_file(), k->line, k->column});
                 }
             } else {
                 register_vector(symbol(k->text));
@@ -407,7 +407,7 @@ void session::declare(const node& n) {
         } else {
             if (is_vector_symbol(symbol(k->text)))
                 throw script_error("cannot declare '" + k->text + "' positive: it is a vector",
-                                   {files_.empty() ? "<string>" : files_.back(), k->line, k->column});
+                                   {current_file(), k->line, k->column});
             symbols_[k->text] = GiNaC::possymbol(k->text);
         }
     }
@@ -542,7 +542,7 @@ void session::report_fields(const std::string& from, const std::string& prose, c
         *out_ << prose;
         return;
     }
-    *out_ << "{\"file\": " << json_quote(files_.empty() ? "<string>" : files_.back()) << ", \"line\": " << statement_line_
+    *out_ << "{\"file\": " << json_quote(current_file()) << ", \"line\": " << statement_line_
           << ", \"kind\": \"report\", \"from\": " << json_quote(from) << (fields.empty() ? "" : ", ") << fields
           << "}\n";
 }
@@ -558,14 +558,14 @@ void session::exec(const node& stmt, bool echo) {
         value v = eval(*stmt.kids[0]);
         if (v.is_none())
             throw script_error("cannot assign nothing to '" + stmt.text + "': the right side has no value",
-                               {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+                               {current_file(), stmt.line, stmt.column});
         if (stmt.text == "Digits") {
             // Digits := n sets the precision of floats (evalf, float literals)
             if (!v.is_ex() || !is_a<numeric>(v.as_ex()) || !ex_to<numeric>(v.as_ex()).is_pos_integer() ||
                 ex_to<numeric>(v.as_ex()) > 100000)
                 throw script_error("Digits must be a positive integer (at most 100000), not " +
                                        (v.is_ex() ? print_ex(v.as_ex()) : v.a_kind()),
-                                   {files_.empty() ? "<string>" : files_.back(), stmt.line, stmt.column});
+                                   {current_file(), stmt.line, stmt.column});
             GiNaC::Digits = ex_to<numeric>(v.as_ex()).to_long();
         }
         set(stmt.text, std::move(v));
@@ -583,7 +583,7 @@ void session::exec(const node& stmt, bool echo) {
             break;
         case output_options::latex: *out_ << latex_value(v) << "\n"; break;
         case output_options::json:
-            *out_ << "{\"file\": " << json_quote(files_.empty() ? "<string>" : files_.back())
+            *out_ << "{\"file\": " << json_quote(current_file())
                   << ", \"line\": " << stmt.line << ", \"kind\": " << json_quote(v.kind())
                   << ", \"value\": " << json_quote(print_value(v, false)) << "}\n";
             break;

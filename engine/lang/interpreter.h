@@ -201,6 +201,9 @@ private:
     std::map<std::string, GiNaC::ex> symbols_;
     std::vector<std::string> dirs_;   ///< folders of the scripts being run
     std::vector<std::string> files_;  ///< names of the scripts being run
+    /// The name of the script being run ("<string>" for text run directly): the file of every
+    /// source_location the session reports.
+    std::string current_file() const { return files_.empty() ? "<string>" : files_.back(); }
     int statement_line_ = 0;          ///< the line of the statement being executed (reports)
     std::string base_dir_;
     int failures_ = 0;

@@ -10,7 +10,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 
 #include "scalar/floats.h"
 #include "scalar/equality.h"
@@ -33,12 +32,6 @@ using GiNaC::numeric;
 
 namespace {
 
-std::string num_str(const GiNaC::numeric& x) {
-    std::ostringstream os;
-    os << x;
-    return os.str();
-}
-
 std::string article(const value& v) { return v.a_kind(); }
 
 const char* verb(const std::string& op) {
@@ -58,13 +51,6 @@ const char* verb(const std::string& op) {
     else if (op == "-") msg = "cannot subtract " + article(b) + " from " + article(a);
     else msg += " and " + article(b);
     throw type_error(msg + " (operator '" + op + "')");
-}
-
-bool has_symbolic(const ex& e) {
-    if (is_a<GiNaC::symbol>(e)) return true;
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (has_symbolic(e.op(i))) return true;
-    return false;
 }
 
 // An operation with a matrix operand must give a matrix: 2^m, m^x and the like
@@ -191,7 +177,7 @@ long integer_exponent(const value& b) {
                          (b.is_ex() ? print_ex(b.as_ex()) : article(b)));
     const numeric k = ex_to<numeric>(b.as_ex());
     if (abs(k) > numeric(max_symbolic_exponent))
-        throw size_error("the power " + num_str(k) + " of an element is too large: element powers are limited to "
+        throw size_error("the power " + print_ex(k) + " of an element is too large: element powers are limited to "
                          "10^5 in absolute value");
     return k.to_long();
 }
@@ -215,8 +201,8 @@ value list_scale(const std::string& op, const value& s, const list& l, bool list
 
 bool both_real_numbers(const ex& a, const ex& b, numeric& x, numeric& y) {
     ex ea = a, eb = b;
-    if (!is_a<numeric>(ea) && ea.info(GiNaC::info_flags::real) && !has_symbolic(ea)) ea = ea.evalf();
-    if (!is_a<numeric>(eb) && eb.info(GiNaC::info_flags::real) && !has_symbolic(eb)) eb = eb.evalf();
+    if (!is_a<numeric>(ea) && ea.info(GiNaC::info_flags::real) && !has_symbol(ea)) ea = ea.evalf();
+    if (!is_a<numeric>(eb) && eb.info(GiNaC::info_flags::real) && !has_symbol(eb)) eb = eb.evalf();
     if (!is_a<numeric>(ea) || !is_a<numeric>(eb)) return false;
     x = ex_to<numeric>(ea);
     y = ex_to<numeric>(eb);

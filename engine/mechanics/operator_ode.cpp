@@ -14,8 +14,6 @@ using GiNaC::ex;
 
 namespace {
 
-std::string str(const ex& e) { return message_text(e); }
-
 // sqrt of a polynomial, exact on its square factors: sqrt(4 (w0 - W)^2) = 2 (w0 - W)
 // (up to a sign, which does not matter for a root pair). Not scalar's sign_free_sqrt: the sign of
 // a square factor here is the one factor() gives (sign_free_sqrt chooses it at a generic point),
@@ -72,13 +70,7 @@ std::string poly_text(const std::vector<cex>& a) {
     const GiNaC::symbol s("s");
     ex p = 0;
     for (std::size_t m = 0; m < a.size(); ++m) p += (a[m].re + GiNaC::I * a[m].im) * GiNaC::pow(s, int(m));
-    return str(p);
-}
-
-long falling(long k, long j) {
-    long r = 1;
-    for (long i = 0; i < j; ++i) r *= (k - i);
-    return r;
+    return message_text(p);
 }
 
 quasi_polynomial nth_derivative(quasi_polynomial q, unsigned n) {
@@ -211,7 +203,7 @@ quasi_polynomial impulse_response(const std::vector<cex>& a, const ex& t, GiNaC:
             if (i < basis[b].j) continue;
             cex zp(ex(1), ex(0));
             for (std::size_t p = 0; p < i - basis[b].j; ++p) zp = tidy_cex(zp * basis[b].z);
-            const ex f = falling(long(i), long(basis[b].j));
+            const ex f = falling_factorial(long(i), long(basis[b].j));
             A[2 * i][b] = f * zp.re;
             A[2 * i][n + b] = -f * zp.im;
             A[2 * i + 1][b] = f * zp.im;
@@ -233,7 +225,7 @@ quasi_polynomial impulse_response(const std::vector<cex>& a, const ex& t, GiNaC:
 operator_polynomial operator_polynomial_from(const ex& p, const GiNaC::symbol& K) {
     const ex e = GiNaC::expand(p);
     if (!e.is_polynomial(K))
-        throw domain_error("operator polynomial: " + str(p) + " is not a polynomial in " + str(K));
+        throw domain_error("operator polynomial: " + message_text(p) + " is not a polynomial in " + message_text(K));
     const int d = e.degree(K);
     operator_polynomial a;
     for (int j = 0; j <= d; ++j) a.push_back(tidy(e.coeff(K, j)));
@@ -254,7 +246,7 @@ ex operator_solution::coefficient(const std::string& name, unsigned k) const {
 namespace {
 
 void validate(const operator_ode& ode, const ex& t) {
-    if (!GiNaC::is_a<GiNaC::symbol>(t)) throw domain_error("operator ODE: " + str(t) + " is not a symbol");
+    if (!GiNaC::is_a<GiNaC::symbol>(t)) throw domain_error("operator ODE: " + message_text(t) + " is not a symbol");
     if (ode.A.size() < 2)
         throw domain_error("operator ODE: order " + std::to_string(int(ode.A.size()) - 1) +
                            " < 1 (A must hold A_0 .. A_M, M >= 1)");
@@ -266,13 +258,13 @@ void validate(const operator_ode& ode, const ex& t) {
     for (const auto& Am : ode.A)
         for (const ex& c : Am)
             if (c.has(t))
-                throw domain_error("operator ODE: coefficient " + str(c) + " depends on " + str(t) +
+                throw domain_error("operator ODE: coefficient " + message_text(c) + " depends on " + message_text(t) +
                                    " (only constant coefficients are solved here)");
     for (const auto& f : ode.forcing) {
         if (f.vector.empty()) throw domain_error("operator ODE: a forcing term has no vector name");
         if (!f.q.is_zero() && !f.q.variable().is_equal(t))
-            throw domain_error("operator ODE: a forcing function is in " + str(f.q.variable()) +
-                               ", not in " + str(t));
+            throw domain_error("operator ODE: a forcing function is in " + message_text(f.q.variable()) + ", not in " +
+                               message_text(t));
     }
 }
 
@@ -424,7 +416,7 @@ verification verify(const operator_ode& ode, const rotation_operator_algebra& R,
     auto is_zero_function = [&](const ex& x) {
         try {
             if (quasi_polynomial::from_ex(tidy(x), t).is_zero()) return true;
-            culprit = str(tidy(x));
+            culprit = message_text(tidy(x));
         } catch (const domain_error& e) {
             culprit = std::string("not a quasi-polynomial: ") + e.what();
         }
@@ -451,8 +443,8 @@ verification verify(const operator_ode& ode, const rotation_operator_algebra& R,
             if (f.vector == p.vector) rhs = rhs + f.q.to_ex() * R.K().pow(long(f.power));
         const element res = lhs - rhs;
         if (!R.vanishes_modulo(res.coefficients(), mp, is_zero_function))
-            fail(v.residual_zero, "residual on " + p.vector + " modulo " + str(R.minimal_polynomial(mp)) + ": " +
-                                      culprit);
+            fail(v.residual_zero,
+                 "residual on " + p.vector + " modulo " + message_text(R.minimal_polynomial(mp)) + ": " + culprit);
     }
     return v;
 }

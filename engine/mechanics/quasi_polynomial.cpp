@@ -73,8 +73,6 @@ cex split(const ex& e) {
 
 bool contains(const ex& e, const ex& t) { return e.has(t); }
 
-std::string str(const ex& e) { return message_text(e); }
-
 constexpr long max_power = 4096;
 
 }  // namespace
@@ -97,7 +95,7 @@ cex inverse_cex(const cex& z, const char* where) {
 
 quasi_polynomial quasi_polynomial::constant(const ex& c, const GiNaC::ex& t) {
     if (contains(c, t))
-        throw domain_error("quasi_polynomial::constant: " + str(c) + " depends on " + str(t));
+        throw domain_error("quasi_polynomial::constant: " + message_text(c) + " depends on " + message_text(t));
     quasi_polynomial q(t);
     q.add_term({split(c), 0, cex(ex(0), ex(0))});
     return q;
@@ -106,7 +104,7 @@ quasi_polynomial quasi_polynomial::constant(const ex& c, const GiNaC::ex& t) {
 quasi_polynomial quasi_polynomial::monomial(const cex& c, unsigned k, const cex& lambda,
                                             const GiNaC::ex& t) {
     if (contains(c.re, t) || contains(c.im, t) || contains(lambda.re, t) || contains(lambda.im, t))
-        throw domain_error("quasi_polynomial::monomial: coefficient or exponent depends on " + str(t));
+        throw domain_error("quasi_polynomial::monomial: coefficient or exponent depends on " + message_text(t));
     quasi_polynomial q(t);
     q.add_term({tidy_cex(c), k, tidy_cex(lambda)});
     return q;
@@ -139,7 +137,7 @@ quasi_polynomial exp_linear(const cex& alpha, const cex& beta, const GiNaC::ex& 
 
 quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
     if (!GiNaC::is_a<GiNaC::symbol>(t))
-        throw domain_error("quasi_polynomial: the variable " + str(t) + " is not a symbol");
+        throw domain_error("quasi_polynomial: the variable " + message_text(t) + " is not a symbol");
     const ex e = e0;
     if (!contains(e, t)) return constant(e, t);
     if (GiNaC::is_a<GiNaC::symbol>(e)) return monomial({1, 0}, 1, {0, 0}, t);  // e == t
@@ -159,14 +157,14 @@ quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
             GiNaC::ex_to<GiNaC::numeric>(n).is_nonneg_integer()) {
             const GiNaC::numeric nn = GiNaC::ex_to<GiNaC::numeric>(n);
             if (nn > GiNaC::numeric(max_power))
-                throw size_error("quasi-polynomial: the power " + str(e) + " exceeds the limit " +
+                throw size_error("quasi-polynomial: the power " + message_text(e) + " exceeds the limit " +
                                  std::to_string(max_power) + " on exponents expanded here");
             const quasi_polynomial b = from_ex(e.op(0), t);
             quasi_polynomial r = constant(1, t);
             for (long i = 0; i < nn.to_long(); ++i) r = r * b;
             return r;
         }
-        throw domain_error("not a quasi-polynomial in " + str(t) + ": the power " + str(e) +
+        throw domain_error("not a quasi-polynomial in " + message_text(t) + ": the power " + message_text(e) +
                            " is not a non-negative integer power of a quasi-polynomial");
     }
     if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
@@ -175,8 +173,8 @@ quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
         if (f == "exp" || f == "cos" || f == "sin" || f == "cosh" || f == "sinh") {
             if (!u.is_polynomial(t) || u.degree(t) > 1 || contains(u.coeff(t, 1), t) ||
                 contains(u.coeff(t, 0), t))
-                throw domain_error("not a quasi-polynomial in " + str(t) + ": the argument of " +
-                                   str(e) + " is not linear in " + str(t));
+                throw domain_error("not a quasi-polynomial in " + message_text(t) + ": the argument of " +
+                                   message_text(e) + " is not linear in " + message_text(t));
             const cex al = split(u.coeff(t, 1)), be = split(u.coeff(t, 0));
             const cex ial(-al.im, al.re), ibe(-be.im, be.re);
             if (f == "exp") return exp_linear(al, be, t);
@@ -187,7 +185,7 @@ quasi_polynomial quasi_polynomial::from_ex(const ex& e0, const GiNaC::ex& t) {
             return cex(ex(0), ex(-1) / 2) * (exp_linear(ial, ibe, t) - exp_linear(-ial, -ibe, t));
         }
     }
-    throw domain_error("not a quasi-polynomial in " + str(t) + ": cannot read " + str(e) +
+    throw domain_error("not a quasi-polynomial in " + message_text(t) + ": cannot read " + message_text(e) +
                        " as a sum of c t^k e^(a t) cos(b t), c t^k e^(a t) sin(b t)");
 }
 
@@ -280,8 +278,8 @@ void quasi_polynomial::adopt_variable(const quasi_polynomial& o) {
         return;
     }
     if (!t_.is_equal(o.t_))
-        throw domain_error("quasi-polynomials in different variables " + str(t_) + " and " +
-                           str(o.t_) + " combined");
+        throw domain_error("quasi-polynomials in different variables " + message_text(t_) + " and " +
+                           message_text(o.t_) + " combined");
 }
 
 bool quasi_polynomial::is_real() const { return imag().is_zero(); }
@@ -437,8 +435,8 @@ quasi_polynomial quasi_polynomial::antiderivative() const {
 
 quasi_polynomial quasi_polynomial::subs(const ex& sym, const ex& s) const {
     if (has_t_ && contains(s, t_))
-        throw domain_error("quasi_polynomial::subs: the replacement " + str(s) + " depends on " +
-                           str(t_));
+        throw domain_error("quasi_polynomial::subs: the replacement " + message_text(s) + " depends on " +
+                           message_text(t_));
     quasi_polynomial r = *this;
     r.terms_.clear();
     auto sb = [&](const ex& e) { return tidy(e.subs(sym == s)); };
@@ -449,9 +447,9 @@ quasi_polynomial quasi_polynomial::subs(const ex& sym, const ex& s) const {
         throw;
     } catch (const std::exception& e) {
         // e.g. 1/(a^2 + b^2) at a = b = 0: a value excluded by the generic reading
-        throw domain_error("quasi_polynomial::subs: " + str(sym) + " = " + str(s) +
-                           " is a value excluded by the generic reading of this closed form (" +
-                           e.what() + "); rebuild it from the specialized integrand instead");
+        throw domain_error("quasi_polynomial::subs: " + message_text(sym) + " = " + message_text(s) +
+                           " is a value excluded by the generic reading of this closed form (" + e.what() +
+                           "); rebuild it from the specialized integrand instead");
     }
     return r;
 }
@@ -487,7 +485,7 @@ quasi_polynomial operator*(const cex& s, const quasi_polynomial& f) {
 
 quasi_polynomial operator*(const ex& s, const quasi_polynomial& f) {
     if (f.has_t_ && contains(s, f.t_))
-        throw domain_error("scalar factor " + str(s) + " depends on " + str(f.t_) +
+        throw domain_error("scalar factor " + message_text(s) + " depends on " + message_text(f.t_) +
                            "; multiply quasi-polynomials instead");
     return split(s) * f;
 }

@@ -22,12 +22,6 @@ using GiNaC::ex;
 
 namespace {
 
-bool has_symbol(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
-    return false;
-}
-
 // |w| can stand in the algebra of K (rotation_operator_algebra): 0, or known positive.
 bool usable_as_omega(const ex& W) {
     if (W.is_zero() || W.info(GiNaC::info_flags::positive)) return true;

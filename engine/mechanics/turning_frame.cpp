@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "mechanics/quasi_polynomial.h"
 #include "scalar/floats.h"
+#include "scalar/scalar.h"
 #include "vector/vector.h"
 
 namespace symrep::mechanics {
@@ -153,13 +154,7 @@ std::optional<std::pair<ex, ex>> float_direction(const ex& literal, const ex& t)
         for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(f) ? f.nops() : 1); ++i) {
             const ex term = GiNaC::is_a<GiNaC::add>(f) ? f.op(i) : f;
             if (term.is_zero()) continue;
-            GiNaC::numeric c = 1;
-            ex rest = 1;
-            for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
-                const ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
-                if (GiNaC::is_a<GiNaC::numeric>(x)) c *= GiNaC::ex_to<GiNaC::numeric>(x);
-                else rest *= x;
-            }
+            const auto [c, rest] = split_numeric_factor(term);
             if (!c.is_real()) return std::nullopt;
             std::size_t col = 0;
             while (col < functions.size() && !functions[col].is_equal(rest)) ++col;

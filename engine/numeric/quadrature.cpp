@@ -28,12 +28,6 @@ bool has_integral(const ex& e) {
 
 namespace {
 
-bool has_symbol(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
-    return false;
-}
-
 // The integral objects of an integrand as the unknowns of y_j' = g_j(x, y_0, ..., y_{j-1}),
 // inner ones first (each int_c^s g(sigma) dsigma with s the variable of the integral around it
 // is one unknown, the same integral met twice one unknown), the integrand itself last.

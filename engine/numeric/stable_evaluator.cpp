@@ -28,7 +28,8 @@ namespace {
 
 // The arithmetic of one tier: unit roundoff u (half an ulp of 1), the bound
 // on a library function's error relative to its result (f_err), and the
-// functions themselves.
+// functions themselves. The specializations look alike on purpose: one table per
+// type, each naming its own library (libm, libquadmath).
 template <class T>
 struct arith;
 

@@ -9,6 +9,7 @@
 #include "core/error.h"
 
 #include "output/printer.h"
+#include "output/precedence.h"
 #include "scalar/floats.h"
 #include "vector/vector.h"
 
@@ -20,13 +21,6 @@ using GiNaC::is_a;
 using GiNaC::numeric;
 
 namespace {
-
-enum level { l_relation = 0, l_sum = 1, l_product = 2, l_power = 3, l_atom = 4 };
-
-struct out_t {
-    std::string text;
-    int lvl;
-};
 
 std::string num_text(const numeric& x) {
     if (x.is_real() && !x.is_rational()) return float_text(x);  // the float model (scalar/floats.h)
@@ -89,9 +83,9 @@ std::string latex_name(const std::string& name, bool bold = false) {
     return base + primes;
 }
 
-out_t lx(const ex& e);
+printed lx(const ex& e);
 
-std::string lparen(const out_t& o, int need) {
+std::string lparen(const printed& o, int need) {
     return o.lvl < need ? "\\left(" + o.text + "\\right)" : o.text;
 }
 
@@ -100,7 +94,7 @@ bool negative_numeric(const numeric& c) {
     return c.real().is_negative() || (c.real().is_zero() && c.imag().is_negative());
 }
 
-out_t lx_numeric(const numeric& x) {
+printed lx_numeric(const numeric& x) {
     if (x.is_rational()) {
         const bool neg = x.is_negative();
         const numeric a = neg ? numeric(-x) : x;
@@ -112,7 +106,7 @@ out_t lx_numeric(const numeric& x) {
         std::string t = num_text(x);
         return {t, x.is_negative() ? l_sum : l_atom};
     }
-    const out_t re = lx_numeric(x.real()), im = lx_numeric(x.imag());
+    const printed re = lx_numeric(x.real()), im = lx_numeric(x.imag());
     std::string imag = x.imag() == 1 ? "i" : x.imag() == -1 ? "-i" : im.text + " i";
     if (x.real().is_zero()) return {imag, l_product};
     if (imag.rfind("-", 0) == 0) return {re.text + " - " + imag.substr(1), l_sum};
@@ -137,20 +131,20 @@ bool is_vector_factor(const ex& f) {
 }
 
 // c * prod(factors) with c > 0 (the caller handles the sign).
-out_t lx_product(const numeric& c, const std::vector<ex>& factors) {
+printed lx_product(const numeric& c, const std::vector<ex>& factors) {
     std::vector<std::string> num, den, vec;
     std::string den_bare, num_bare;  // the text of a lone factor without parentheses (a sum alone in \frac)
     std::size_t num_factors = 0;
     for (const ex& f : factors) {
         if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_real() &&
             ex_to<numeric>(f.op(1)).is_negative() && !is_ex_the_function(f.op(0), vdot)) {
-            const out_t o = lx(GiNaC::pow(f.op(0), -f.op(1)));
+            const printed o = lx(GiNaC::pow(f.op(0), -f.op(1)));
             den.push_back(lparen(o, l_power));
             den_bare = o.text;
         } else if (is_vector_factor(f)) {
             vec.push_back(lparen(lx(f), l_power));
         } else {
-            const out_t o = lx(f);
+            const printed o = lx(f);
             num.push_back(lparen(o, l_power));
             num_bare = o.text;
             ++num_factors;
@@ -177,7 +171,7 @@ out_t lx_product(const numeric& c, const std::vector<ex>& factors) {
 }
 
 
-out_t lx_sum(const ex& e) {
+printed lx_sum(const ex& e) {
     std::string s;
     bool first = true;
     for (const ex& t : canonical_terms(e)) {
@@ -185,7 +179,7 @@ out_t lx_sum(const ex& e) {
         std::vector<ex> rest;
         split_coefficient(t, c, rest);
         const bool neg = negative_numeric(c);
-        out_t body = lx_product(neg ? numeric(-c) : c, rest);
+        printed body = lx_product(neg ? numeric(-c) : c, rest);
         const std::string b = body.lvl <= l_sum ? "\\left(" + body.text + "\\right)" : body.text;
         if (first) s += neg ? "-" + b : b;
         else s += (neg ? " - " : " + ") + b;
@@ -208,12 +202,12 @@ std::string fn_name(const std::string& n) {
 }
 
 std::string vec_operand(const ex& a) {
-    const out_t o = lx(a);
+    const printed o = lx(a);
     if (is_ex_the_function(a, vcross) || (is_ex_the_function(a, vdot) && !a.op(0).is_equal(a.op(1)))) return "\\left(" + o.text + "\\right)";
     return lparen(o, l_power);
 }
 
-out_t lx(const ex& e) {
+printed lx(const ex& e) {
     if (is_a<numeric>(e)) return lx_numeric(ex_to<numeric>(e));
     if (is_a<GiNaC::symbol>(e)) return {latex_name(ex_to<GiNaC::symbol>(e).get_name(), is_vector_symbol(e)), l_atom};
     if (is_a<GiNaC::constant>(e)) {
@@ -321,9 +315,9 @@ std::string latex_element(const element& w) {
         } else if (c.is_equal(-1)) {
             term = "-" + latex_basis(name);
         } else {
-            const out_t o = lx(c);
+            const printed o = lx(c);
             if (is_a<GiNaC::add>(c)) {  // a sum of negative terms: - (a + b) name
-                const out_t m = lx(-c);
+                const printed m = lx(-c);
                 if (o.text.rfind("-", 0) == 0 && m.text.rfind("-", 0) != 0)
                     term = "-\\left(" + m.text + "\\right) " + latex_basis(name);
                 else
@@ -370,18 +364,18 @@ void check_codable(const ex& e, const char* fn) {
         throw type_error(std::string(fn) + ": an equation has no code; give one side (lhs(e) or rhs(e))");
 }
 
-out_t py(const ex& e);
+printed py(const ex& e);
 
 // The code printer writes Python (NumPy) or, when c_style is set, C with double
 // arithmetic. Sums follow the canonical term order, products sort their factors.
 thread_local bool c_style = false;
 
-std::string pparen(const out_t& o, int need) { return o.lvl < need ? "(" + o.text + ")" : o.text; }
+std::string pparen(const printed& o, int need) { return o.lvl < need ? "(" + o.text + ")" : o.text; }
 
 /// An integer literal: 3 in Python, 3.0 in C (no integer division).
 std::string int_lit(const numeric& n) { return c_style ? num_text(n) + ".0" : num_text(n); }
 
-out_t py_numeric(const numeric& x) {
+printed py_numeric(const numeric& x) {
     if (x.is_integer()) return {int_lit(x), x.is_negative() ? l_sum : l_atom};
     if (x.is_rational()) return {int_lit(x.numer()) + "/" + int_lit(x.denom()), l_sum};
     if (x.is_real()) {
@@ -410,7 +404,7 @@ std::string py_fn(const std::string& n) {
     throw type_error("pycode: the function " + n + " has no NumPy equivalent here");
 }
 
-out_t py(const ex& e) {
+printed py(const ex& e) {
     if (is_a<numeric>(e)) return py_numeric(ex_to<numeric>(e));
     if (is_a<GiNaC::symbol>(e)) {
         std::string n = ex_to<GiNaC::symbol>(e).get_name();
@@ -430,7 +424,7 @@ out_t py(const ex& e) {
             std::vector<ex> rest;
             split_coefficient(t, c, rest);
             const bool neg = negative_numeric(c) && !s.empty();
-            const out_t o = py(neg ? ex(-t) : t);
+            const printed o = py(neg ? ex(-t) : t);
             if (s.empty()) s = o.text;
             else s += (neg ? " - " : " + ") + pparen(o, neg ? l_product : l_sum);
         }

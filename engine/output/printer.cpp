@@ -1,5 +1,6 @@
 // symrep/output/printer.cpp -- canonical printing (see printer.h for the rules).
 #include "output/printer.h"
+#include "output/precedence.h"
 
 #include "scalar/floats.h"
 #include "scalar/scalar.h"
@@ -24,15 +25,6 @@ std::string num_str(const GiNaC::numeric& x) {
     os << x;
     return os.str();
 }
-
-// Precedence levels of printed text: a child whose level is below what the
-// parent needs is put in parentheses.
-enum level { l_relation = 0, l_sum = 1, l_product = 2, l_power = 3, l_atom = 4 };
-
-struct printed {
-    std::string text;
-    int lvl;
-};
 
 std::string paren(const printed& p, int need) { return p.lvl < need ? "(" + p.text + ")" : p.text; }
 
@@ -83,13 +75,6 @@ printed pr_numeric(const numeric& x) {
 bool looks_negative(const numeric& c) {
     if (c.is_real()) return c.is_negative();
     return c.real().is_negative() || (c.real().is_zero() && c.imag().is_negative());
-}
-
-bool has_symbol(const ex& e) {
-    if (is_a<GiNaC::symbol>(e)) return true;
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (has_symbol(e.op(i))) return true;
-    return false;
 }
 
 bool is_order(const ex& e) {

@@ -204,16 +204,21 @@ std::string witness_text(const zero_decision& d) {
     return out;
 }
 
-point_value value_at_generic_point(const GiNaC::ex& x) {
-    point_value out;
+GiNaC::exmap generic_point(const GiNaC::ex& x, const GiNaC::ex& except) {
     GiNaC::exmap point;
     for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it) && !point.count(*it)) {
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(except) && !point.count(*it)) {
             const std::string& name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
             std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name
             for (unsigned char c : name) h = (h ^ c) * 1099511628211ull;
             point[*it] = GiNaC::numeric(long(1100 + h % 1800), 1000);
         }
+    return point;
+}
+
+point_value value_at_generic_point(const GiNaC::ex& x) {
+    point_value out;
+    const GiNaC::exmap point = generic_point(x);
     GiNaC::ex at;
     try {
         at = point.empty() ? x : x.subs(point, GiNaC::subs_options::no_pattern);
@@ -238,13 +243,11 @@ bool seen_different(const point_value& a, const point_value& b) {
 bool is_nonzero_generic(const GiNaC::ex& x, const std::string& what) {
     if (GiNaC::is_a<GiNaC::numeric>(x)) return !x.is_zero();
     if (is_zero_scalar(x)) return false;
-    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;  // generic reading
+    if (has_symbol(x)) return true;  // generic reading
     const zero_decision d = decide_zero(x);
     if (d.is_zero == truth::yes) return false;
     if (d.is_zero == truth::no) return true;
-    std::string text = message_text(x);
-    if (text.size() > 200) text = text.substr(0, 197) + "...";
+    const std::string text = message_text(x);  // cut at text_limit::message
     throw domain_error(what + ": cannot decide whether " + text +
                        " is 0 (not proved 0, and not seen nonzero at 80 digits); taking it as nonzero could "
                        "give a wrong answer");

@@ -62,6 +62,9 @@ struct point_value {
     GiNaC::numeric low, high;  ///< at 20 and at 40 digits
 };
 point_value value_at_generic_point(const GiNaC::ex& x);
+/// That point for the symbols of x (all but `except`, a variable such as t, when given): each
+/// symbol at (1100 + h mod 1800)/1000, h the 64-bit FNV-1a hash of its name.
+GiNaC::exmap generic_point(const GiNaC::ex& x, const GiNaC::ex& except = GiNaC::ex());
 
 /// True when a - b is seen nonzero at the point: at 40 digits larger than 10^-12
 /// and the same to 10 digits at 20 digits. An identity a = b (anything the exact

@@ -11,14 +11,6 @@ namespace symrep {
 
 using GiNaC::ex;
 
-namespace {
-
-bool has_free_symbols(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
-    return false;
-}
-
 bool has_radical(const ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
         if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
@@ -27,6 +19,7 @@ bool has_radical(const ex& e) {
     return false;
 }
 
+namespace {
 
 // b or -b, whichever is positive at the generic point (b itself when that is not decided):
 // the sign of a square root's factor does not depend on GiNaC's term order.
@@ -149,7 +142,7 @@ int sign_generic(const ex& x) {
     if (e.is_zero()) return 0;
     if (e.info(GiNaC::info_flags::positive)) return 1;
     if (e.info(GiNaC::info_flags::negative)) return -1;
-    if (!has_free_symbols(e)) {
+    if (!has_symbol(e)) {
         const ex v = GiNaC::evalf(e);
         if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
             const GiNaC::numeric nv = GiNaC::ex_to<GiNaC::numeric>(v);

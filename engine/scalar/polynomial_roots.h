@@ -32,6 +32,9 @@ namespace symrep {
 /// and not 0 is read as positive (the generic reading of the algebra layer).
 int sign_generic(const GiNaC::ex& x);
 
+/// True when e contains a power with a non-integer numeric exponent (a radical: sqrt(2), u^(1/3)).
+bool has_radical(const GiNaC::ex& e);
+
 /// e with its non-rational atoms (functions such as log(2), constants such as pi, non-integer
 /// powers such as sqrt(2)) replaced by temporary symbols (recorded in `back`, reused through
 /// `seen`), so that e is a polynomial over Q(symbols) that GiNaC's factor() understands.

@@ -102,6 +102,14 @@ GiNaC::ex subs_checked(const GiNaC::ex& e, const S& s) {
 /// Double zero test with an absolute tolerance (callers scale it to the data).
 inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= tol; }
 
+/// True when x contains a symbol (a free parameter, the variable t, ...); false for numbers,
+/// constants such as pi and expressions made of them.
+bool has_symbol(const GiNaC::ex& x);
+
+/// A term (a product, or a single factor) split as c rest: c the product of its numeric
+/// factors, rest the product of the others in their order (1 when there are none).
+std::pair<GiNaC::numeric, GiNaC::ex> split_numeric_factor(const GiNaC::ex& term);
+
 /// True when x contains a function call (exp, cos, log, ...).
 bool has_function_call(const GiNaC::ex& x);
 
@@ -176,10 +184,28 @@ GiNaC::ex canonical_radicals(const GiNaC::ex& e);
 GiNaC::ex simplify_scalar(const GiNaC::ex& x);
 inline double tidy(double x) { return x; }
 
+/// The lengths (characters) beyond which message_text cuts an expression, one per use:
+namespace text_limit {
+/// an expression that an error message names (message_text's default)
+inline constexpr std::size_t message = 160;
+/// a part of an expression quoted beside the whole it comes from (a coefficient, an argument):
+/// shorter, so that the sentence around it stays readable
+inline constexpr std::size_t fragment = 80;
+/// an expression inside a report or an error of the transforms and of the multicomplex signals
+/// (transforms, inverses, modulations: longer forms than an error's operand)
+inline constexpr std::size_t report = 200;
+/// the same in the representations and responses of signals/ (representation.cpp,
+/// response.cpp); 300 rather than 200 by history only, kept so that outputs stay byte-identical
+inline constexpr std::size_t signal_report = 300;
+/// a text that names an object (a polynomial algebra's name): not cut in practice
+inline constexpr std::size_t name = 100000;
+}  // namespace text_limit
+
 /// An expression as text for an error message, cut to about `max` characters
-/// (a message that quotes a 10 000-character minimal polynomial helps nobody).
-/// Printed by the message printer below.
-std::string message_text(const GiNaC::ex& e, std::size_t max = 160);
+/// (a message that quotes a 10 000-character minimal polynomial helps nobody): its first
+/// max/2 and last max/4 characters around " ... ", and its length. Printed by the message
+/// printer below.
+std::string message_text(const GiNaC::ex& e, std::size_t max = text_limit::message);
 
 /// The printer of message_text. GiNaC's own output orders terms by hash values that depend
 /// on the addresses of its type names (so on address randomization) and on the order in
@@ -199,6 +225,14 @@ inline double log_modulus(double a, double b) { return std::log(std::hypot(a, b)
 /// std::exp on the double path.
 GiNaC::ex exp_scalar(const GiNaC::ex& x);
 inline double exp_scalar(double x) { return std::exp(x); }
+
+/// The falling factorial k (k-1) ... (k-j+1) (1 for j = 0): the factor of the j-th derivative
+/// of z^k, d^j/dz^j z^k = falling_factorial(k, j) z^(k-j).
+inline long falling_factorial(long k, long j) {
+    long r = 1;
+    for (long i = 0; i < j; ++i) r *= (k - i);
+    return r;
+}
 
 /// Scalar from an integer, for both paths.
 template <class T> T from_int(long k) { return T(k); }

@@ -53,6 +53,23 @@ GiNaC::ex trig_of_arctangents(const GiNaC::ex& e) {
     return f(e);
 }
 
+bool has_symbol(const GiNaC::ex& x) {
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
+    return false;
+}
+
+std::pair<GiNaC::numeric, GiNaC::ex> split_numeric_factor(const GiNaC::ex& term) {
+    GiNaC::numeric c = 1;
+    GiNaC::ex rest = 1;
+    for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
+        const GiNaC::ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+        if (GiNaC::is_a<GiNaC::numeric>(x)) c *= GiNaC::ex_to<GiNaC::numeric>(x);
+        else rest *= x;
+    }
+    return {c, rest};
+}
+
 bool has_function_call(const GiNaC::ex& x) {
     if (GiNaC::is_a<GiNaC::function>(x)) return true;
     for (std::size_t k = 0; k < x.nops(); ++k)

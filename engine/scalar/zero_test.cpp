@@ -284,19 +284,6 @@ namespace {
 
 bool is_atan(const GiNaC::ex& u) { return GiNaC::is_the_function<GiNaC::atan_SERIAL>(u); }
 
-/// A sum of integer multiples of arctangents of real numbers and of a rational
-/// multiple of pi, c_pi pi + sum c_j atan(z_j) (no symbols), is 0 exactly when
-///   e^(i S) = e^(i c_pi pi) prod ((1 + i z_j)/sqrt(1 + z_j^2))^(c_j) = 1   (an algebraic identity)
-/// and |S| < 2 pi (then S, a multiple of 2 pi, is 0). The first is decided by
-/// the zero test on algebraic numbers, the second by a 30-digit evaluation
-/// that only has to separate 0 from 2 pi. Answers true, or false when it does
-/// not apply or does not prove it (never a claim that S is not 0).
-bool has_symbol(const GiNaC::ex& x) {
-    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
-    return false;
-}
-
 bool is_integer_number(const GiNaC::ex& c) {
     return GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_integer();
 }
@@ -308,6 +295,13 @@ bool is_real_constant(const GiNaC::ex& z) {
     return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
 }
 
+/// A sum of integer multiples of arctangents of real numbers and of a rational
+/// multiple of pi, c_pi pi + sum c_j atan(z_j) (no symbols), is 0 exactly when
+///   e^(i S) = e^(i c_pi pi) prod ((1 + i z_j)/sqrt(1 + z_j^2))^(c_j) = 1   (an algebraic identity)
+/// and |S| < 2 pi (then S, a multiple of 2 pi, is 0). The first is decided by
+/// the zero test on algebraic numbers, the second by a 30-digit evaluation
+/// that only has to separate 0 from 2 pi. Answers true, or false when it does
+/// not apply or does not prove it (never a claim that S is not 0).
 bool is_zero_arctangent_sum(const GiNaC::ex& x) {
     const GiNaC::ex y = GiNaC::expand(x);
     GiNaC::ex E = 1;

@@ -27,8 +27,6 @@ coeffs carrier_factor(const multicomplex& A, unsigned k, const ex& omega, const 
     return f;
 }
 
-std::string text(const ex& e) { return message_text(e, 200); }
-
 /// cos, sin of t-free arguments written with exp(I x), so that a component r (cos x - I sin x)
 /// reads as one term r exp(-I x).
 struct exponential_form : GiNaC::map_function {
@@ -147,12 +145,14 @@ amplitude_modulation amplitude_modulated(const multicomplex& A, const coeffs& w)
                 r.holds = truth::no;
                 const std::string at = witness_text(d);
                 r.report = what;
-                if (show_difference) r.report += " (" + text(part) + " is not 0" + (at.empty() ? "" : " " + at) + ")";
+                if (show_difference)
+                    r.report += " (" + message_text(part, text_limit::report) + " is not 0" +
+                                (at.empty() ? "" : " " + at) + ")";
                 return false;
             }
             if (d.is_zero == truth::unknown) {
                 r.holds = truth::unknown;
-                r.report = "cannot decide whether w is amplitude-modulated: " + text(part) +
+                r.report = "cannot decide whether w is amplitude-modulated: " + message_text(part, text_limit::report) +
                            " is neither proved 0 nor seen nonzero (the test: " + what + ")";
                 return false;
             }
@@ -175,7 +175,8 @@ amplitude_modulation amplitude_modulated(const multicomplex& A, const coeffs& w)
     for (std::size_t p = 1; p < P; ++p)
         if (!decide(pz[p].r - m0,
                     "not amplitude-modulated: the idempotent components 0 and " + std::to_string(p) +
-                        " have different moduli, " + text(m0) + " and " + text(pz[p].r) + " (IV.1.66)",
+                        " have different moduli, " + message_text(m0, text_limit::report) + " and " +
+                        message_text(pz[p].r, text_limit::report) + " (IV.1.66)",
                     false))
             return r;
     // the phases affine in the signs: z_(++) z_(--) = z_(+-) z_(-+) on every face k < l

@@ -29,8 +29,6 @@ ex functional(const coeffs& lambda, const coeffs& x) {
 
 namespace {
 
-std::string text(const ex& e) { return message_text(e, 300); }
-
 // lambda(x) = (K^-1 x)[n-1], K the matrix of the powers 1, d, ..., d^(n-1) (columns):
 // the row with K^T lambda = e_(n-1).
 coeffs power_basis_functional(const algebra& A, const coeffs& d) {
@@ -52,18 +50,18 @@ coeffs power_basis_functional(const algebra& A, const coeffs& d) {
 
 std::string polynomial_text(const ex& p, const GiNaC::symbol& X) {
     const ex e = GiNaC::expand(p);
-    if (!e.is_polynomial(X)) return text(e);
+    if (!e.is_polynomial(X)) return message_text(e, text_limit::signal_report);
     std::string out;
     for (int k = e.degree(X); k >= 0; --k) {
         const ex c = e.coeff(X, k);
         if (c.is_zero()) continue;
         std::string mono = k == 0 ? "" : k == 1 ? X.get_name() : X.get_name() + "^" + std::to_string(k);
-        std::string coef = text(c);
+        std::string coef = message_text(c, text_limit::signal_report);
         bool negative = false;
         if (GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_real() &&
             GiNaC::ex_to<GiNaC::numeric>(c) < 0) {
             negative = true;
-            coef = text(-c);
+            coef = message_text(-c, text_limit::signal_report);
         } else if (GiNaC::is_a<GiNaC::add>(c)) {
             coef = "(" + coef + ")";
         }
@@ -158,12 +156,14 @@ void require_solution(const representation& R, const ex& f, const ex& residual, 
     if (is_zero_scalar(residual)) return;
     const zero_decision z = decide_zero(residual);
     if (z.is_zero == truth::no)
-        throw domain_error("signals: " + text(f) + " is not a solution of p(" + op + ") f = 0 for p = " +
-                           polynomial_text(R.p, R.X) + " (p(" + op + ") f = " + text(residual) + ", not 0 " +
-                           witness_text(z) + "), so it is not represented on " + R.A->name());
+        throw domain_error("signals: " + message_text(f, text_limit::signal_report) + " is not a solution of p(" + op +
+                           ") f = 0 for p = " + polynomial_text(R.p, R.X) + " (p(" + op +
+                           ") f = " + message_text(residual, text_limit::signal_report) + ", not 0 " + witness_text(z) +
+                           "), so it is not represented on " + R.A->name());
     if (z.is_zero == truth::unknown)
-        throw domain_error("signals: cannot decide whether " + text(f) + " solves p(" + op + ") f = 0 for p = " +
-                           polynomial_text(R.p, R.X) + " (p(" + op + ") f = " + text(residual) +
+        throw domain_error("signals: cannot decide whether " + message_text(f, text_limit::signal_report) +
+                           " solves p(" + op + ") f = 0 for p = " + polynomial_text(R.p, R.X) + " (p(" + op +
+                           ") f = " + message_text(residual, text_limit::signal_report) +
                            " is neither proved 0 nor seen nonzero)");
 }
 
@@ -225,9 +225,10 @@ bool is_exp(const ex& x) {
 }
 
 [[noreturn]] void not_quasi_polynomial(const ex& f, const ex& part, const GiNaC::symbol& t) {
-    throw domain_error("signals: " + text(f) + " is not a quasi-polynomial in " + t.get_name() + ": its part " +
-                       text(part) + " is not c " + t.get_name() + "^k exp(a " + t.get_name() + ") cos(b " +
-                       t.get_name() + ") / sin(b " + t.get_name() + ") with a, b, c free of " + t.get_name());
+    throw domain_error("signals: " + message_text(f, text_limit::signal_report) + " is not a quasi-polynomial in " +
+                       t.get_name() + ": its part " + message_text(part, text_limit::signal_report) + " is not c " +
+                       t.get_name() + "^k exp(a " + t.get_name() + ") cos(b " + t.get_name() + ") / sin(b " +
+                       t.get_name() + ") with a, b, c free of " + t.get_name());
 }
 
 // One term c t^k e^(lambda t) of the expanded exponential form: (c, k, lambda).
@@ -268,13 +269,7 @@ std::pair<ex, ex> real_imag(const ex& z) {
     ex re = 0, im = 0;
     for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
         const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
-        GiNaC::numeric n = 1;
-        ex rest = 1;
-        for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
-            const ex x = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
-            if (GiNaC::is_a<GiNaC::numeric>(x)) n *= GiNaC::ex_to<GiNaC::numeric>(x);
-            else rest *= x;
-        }
+        const auto [n, rest] = split_numeric_factor(term);
         re += n.real() * rest;
         im += n.imag() * rest;
     }
@@ -395,9 +390,10 @@ struct ratio_term {
 
 [[noreturn]] void not_a_sequence(const ex& f, const ex& part, const GiNaC::symbol& k) {
     const std::string n = k.get_name();
-    throw domain_error("signals: " + text(f) + " is not a sequence of the form c " + n + "^j a^" + n + " exp(b " + n +
-                       ") cos(c " + n + ") / sin(c " + n + ") in " + n + ": its part " + text(part) +
-                       " is not (a, b, c free of " + n + ")");
+    throw domain_error("signals: " + message_text(f, text_limit::signal_report) + " is not a sequence of the form c " +
+                       n + "^j a^" + n + " exp(b " + n + ") cos(c " + n + ") / sin(c " + n + ") in " + n +
+                       ": its part " + message_text(part, text_limit::signal_report) + " is not (a, b, c free of " + n +
+                       ")");
 }
 
 // f as a sum of c k^j rho^k: cos and sin of c k split into the ratios e^(+-i c).
@@ -493,13 +489,16 @@ ex sequence_annihilator(const ex& f, const GiNaC::symbol& k, const GiNaC::symbol
             }
         if (!any) continue;
         if (is_zero_scalar(rho.first) && is_zero_scalar(rho.second))
-            throw domain_error("signals: " + text(f) + " has a part with ratio 0 (0^k), not a solution of a "
+            throw domain_error("signals: " + message_text(f, text_limit::signal_report) +
+                               " has a part with ratio 0 (0^k), not a solution of a "
                                "difference equation for every k");
         modes.push_back({rho.first, rho.second, top + 1});
     }
     if (modes.empty())
         throw domain_error("signals: the sequence is 0, which every algebra represents by 0; no least "
                            "equation of positive order");
+    // pairs merged as in annihilator(), but on the ratios' parts (re, im) as read from the
+    // sequence, with the quadratic factor X^2 - 2 re X + |rho|^2 in its expanded form
     std::vector<bool> used(modes.size(), false);
     ex q = 1;
     for (std::size_t i = 0; i < modes.size(); ++i) {
@@ -618,8 +617,8 @@ namespace {
 // z as "u/pi" when z pi is free of pi (GiNaC would print 2*Pi^(-1)*h).
 std::string over_pi(const ex& z) {
     const ex u = tidy(z * GiNaC::Pi);
-    if (u.has(GiNaC::Pi)) return text(z);
-    const std::string s = text(u);
+    if (u.has(GiNaC::Pi)) return message_text(z, text_limit::signal_report);
+    const std::string s = message_text(u, text_limit::signal_report);
     return (GiNaC::is_a<GiNaC::add>(u) ? "(" + s + ")" : s) + "/pi";
 }
 }  // namespace
@@ -646,7 +645,8 @@ sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
         for (std::size_t j = i + 1; j < r.size(); ++j) {
             if (is_zero_scalar(tidy(r[i] - r[j]))) continue;  // a repeated root
             const ex z = tidy(h * (r[i] - r[j]) / (2 * GiNaC::Pi * GiNaC::I));
-            const std::string pair = text(r[i]) + " and " + text(r[j]);
+            const std::string pair =
+                message_text(r[i], text_limit::signal_report) + " and " + message_text(r[j], text_limit::signal_report);
             if (GiNaC::is_a<GiNaC::numeric>(z)) {
                 if (GiNaC::ex_to<GiNaC::numeric>(z).is_integer()) met.push_back(pair);
             } else if (symbols_in(z).empty()) {  // a constant: the nearest integer, then exactly
@@ -681,22 +681,24 @@ sampling sample(const representation& R, const ex& h, const GiNaC::symbol& l) {
     const int n = int(R.A->dim());
     if (!met.empty()) {
         s.aliasing = truth::yes;
-        os << "aliasing at step " << text(h) << ": the roots ";
+        os << "aliasing at step " << message_text(h, text_limit::signal_report) << ": the roots ";
         for (std::size_t i = 0; i < met.size(); ++i) os << (i ? "; " : "") << met[i];
         os << " of p sample to the same e^(h r), so the samples span fewer than "
            << n << " dimensions";
     } else if (!all || undecided) {
         s.aliasing = truth::unknown;
-        os << "aliasing at step " << text(h) << " not decided: "
-           << (!all ? "p has a rational factor whose roots are not found (degree > 3, or a discriminant of unknown sign)"
-                    : "whether two roots sample to the same e^(h r) is neither proved nor disproved");
+        os << "aliasing at step " << message_text(h, text_limit::signal_report) << " not decided: "
+           << (!all
+                   ? "p has a rational factor whose roots are not found (degree > 3, or a discriminant of unknown sign)"
+                   : "whether two roots sample to the same e^(h r) is neither proved nor disproved");
     } else if (!conditions.empty()) {
         s.aliasing = truth::no;
-        os << "no aliasing for a generic step " << text(h) << "; aliasing exactly for the roots ";
+        os << "no aliasing for a generic step " << message_text(h, text_limit::signal_report)
+           << "; aliasing exactly for the roots ";
         for (std::size_t i = 0; i < conditions.size(); ++i) os << (i ? "; " : "") << conditions[i];
     } else {
         s.aliasing = truth::no;
-        os << "no aliasing at step " << text(h) << ": the " << n
+        os << "no aliasing at step " << message_text(h, text_limit::signal_report) << ": the " << n
            << " dimensions of the solution space stay " << n << " in the samples";
     }
     s.report = os.str();

@@ -29,7 +29,7 @@ std::vector<GiNaC::numeric> coefficients(const GiNaC::ex& p, const GiNaC::symbol
         const GiNaC::ex v = GiNaC::is_a<GiNaC::numeric>(ck) ? ck : GiNaC::evalf(ck);
         if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
             throw domain_error(std::string("fourier_inversion: the transform has a coefficient that is not a real "
-                                           "number (") + message_text(e.coeff(s, k), 80) +
+                                           "number (") + message_text(e.coeff(s, k), text_limit::fragment) +
                                "): give every parameter a value");
         c.push_back(GiNaC::ex_to<GiNaC::numeric>(v));
     }

@@ -2,11 +2,11 @@
 #include "transforms/laplace.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <sstream>
 
 #include "algebra/polynomial_algebra.h"
 #include "core/error.h"
+#include "scalar/equality.h"
 #include "scalar/polynomial_roots.h"
 #include "scalar/scalar.h"
 #include "signals/representation.h"
@@ -16,8 +16,6 @@ namespace symrep::transforms {
 using GiNaC::ex;
 
 namespace {
-
-std::string text(const ex& e) { return message_text(e, 200); }
 
 // (f causal quasi-polynomial) Lf(s) = q(s)/p(s) from f = Psi^-1(w) on P_p, not checked
 ex laplace_raw(const ex& f, const GiNaC::symbol& t, const ex& s) {
@@ -38,11 +36,13 @@ struct rational {
 };
 
 rational proper_rational(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) {
-    if (F.has(t)) throw domain_error("inverse_laplace: F contains " + text(t) + "; it must be a function of " + text(s));
+    if (F.has(t))
+        throw domain_error("inverse_laplace: F contains " + message_text(t, text_limit::report) +
+                           "; it must be a function of " + message_text(s, text_limit::report));
     const ex nd = GiNaC::normal(F).numer_denom();
     const ex num = nd.op(0).expand(), den = nd.op(1).expand();
     if (!num.is_polynomial(s) || !den.is_polynomial(s))
-        throw domain_error("inverse_laplace: F is not a rational function of " + text(s) +
+        throw domain_error("inverse_laplace: F is not a rational function of " + message_text(s, text_limit::report) +
                            " (only those are transforms of quasi-polynomials)");
     if (den.degree(s) < 1 || num.degree(s) >= den.degree(s))
         throw domain_error("inverse_laplace: F is not proper (numerator of degree " +
@@ -68,7 +68,8 @@ void require_same(const ex& a, const ex& b, const std::string& what) {
     if (is_zero_scalar(diff)) return;
     const zero_decision z = decide_zero(diff);
     if (z.is_zero == truth::yes) return;
-    throw algebra_error(what + ": the check by the inverse transform failed (" + text(diff) +
+    throw algebra_error(what + ": the check by the inverse transform failed (" +
+                        message_text(diff, text_limit::report) +
                         (z.is_zero == truth::no ? " is not 0)" : " is not proved 0)"));
 }
 
@@ -76,13 +77,7 @@ ex real_part_of(const ex& x) { return tidy(GiNaC::real_part(x.expand())); }
 
 // x at `digits` digits with each symbol but t at a fixed rational in [1.1, 2.9] (by its name).
 bool value_at(const ex& x, const GiNaC::symbol& t, long digits, GiNaC::numeric& out) {
-    GiNaC::exmap point;
-    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t) && !point.count(*it)) {
-            std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name
-            for (unsigned char c : GiNaC::ex_to<GiNaC::symbol>(*it).get_name()) h = (h ^ c) * 1099511628211ull;
-            point[*it] = GiNaC::numeric(long(1100 + h % 1800), 1000);
-        }
+    const GiNaC::exmap point = generic_point(x, t);
     return evaluate_numeric(point.empty() ? x : x.subs(point, GiNaC::subs_options::no_pattern), digits, out);
 }
 
@@ -104,13 +99,7 @@ void require_same_numerically(const rational& r, const ex& f, const GiNaC::symbo
     // not of the radicals
     ex fN;
     {
-        GiNaC::exmap point;
-        for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it)
-            if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(t) && !point.count(*it)) {
-                std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name, as value_at
-                for (unsigned char ch : GiNaC::ex_to<GiNaC::symbol>(*it).get_name()) h = (h ^ ch) * 1099511628211ull;
-                point[*it] = GiNaC::numeric(long(1100 + h % 1800), 1000);
-            }
+        const GiNaC::exmap point = generic_point(f, t);  // as value_at
         const long saved = GiNaC::Digits;
         GiNaC::Digits = 60;
         try {
@@ -125,26 +114,26 @@ void require_same_numerically(const rational& r, const ex& f, const GiNaC::symbo
     for (int k = 1; k <= n; ++k) D.push_back(GiNaC::diff(D.back(), t));
     const GiNaC::numeric tol("1e-30");
     const auto fail = [&](const std::string& what) {
-        throw algebra_error("inverse_laplace: the numeric check (50 digits) of the inverse " + text(f) + " failed: " +
-                            what);
+        throw algebra_error("inverse_laplace: the numeric check (50 digits) of the inverse " +
+                            message_text(f, text_limit::report) + " failed: " + what);
     };
     for (int k = 0; k < n; ++k) {
         GiNaC::numeric v, want;
         if (!value_at(D[std::size_t(k)].subs(t == 0), t, 50, v) || !value_at(c[std::size_t(k)], t, 50, want))
             fail("f^(" + std::to_string(k) + ")(0) is not a number");
         if (GiNaC::abs(v - want) > tol * std::max(GiNaC::numeric(1), GiNaC::abs(want)))
-            fail("f^(" + std::to_string(k) + ")(0) is not " + text(c[std::size_t(k)]));
+            fail("f^(" + std::to_string(k) + ")(0) is not " + message_text(c[std::size_t(k)], text_limit::report));
     }
     for (const GiNaC::numeric t0 : {GiNaC::numeric(1, 3), GiNaC::numeric(1)}) {
         GiNaC::numeric residual = 0, size = 1;
         for (int k = 0; k <= n; ++k) {
             GiNaC::numeric pk, dk;
             if (!value_at(r.p.coeff(s, k), t, 50, pk) || !value_at(D[std::size_t(k)].subs(t == t0), t, 50, dk))
-                fail("p(D) f is not a number at t = " + text(t0));
+                fail("p(D) f is not a number at t = " + message_text(t0, text_limit::report));
             residual += pk * dk;
             size += GiNaC::abs(pk * dk);
         }
-        if (GiNaC::abs(residual) > tol * size) fail("p(D) f is not 0 at t = " + text(t0));
+        if (GiNaC::abs(residual) > tol * size) fail("p(D) f is not 0 at t = " + message_text(t0, text_limit::report));
     }
 }
 
@@ -199,7 +188,7 @@ ex energy(const ex& f, const GiNaC::symbol& t) {
         const bool constant = GiNaC::is_a<GiNaC::numeric>(re.evalf());
         const bool known = constant && evaluate_numeric(re, 40, v) && v.is_real();
         if (re.info(GiNaC::info_flags::negative) || (known && v < 0 && !is_zero_scalar(re))) continue;
-        const std::string x = text(e.lambda);
+        const std::string x = message_text(e.lambda, text_limit::report);
         std::string& slot = (is_zero_scalar(re) || (known && v > 0)) ? bad : undecided;
         if (slot.empty() || x < slot) slot = x;
     }
@@ -255,7 +244,9 @@ algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, 
             if (!seen) mus.push_back(e.lambda);
         }
     // in the order of their printed forms: the report does not depend on GiNaC's term order
-    std::sort(mus.begin(), mus.end(), [](const ex& x, const ex& y) { return text(x) < text(y); });
+    std::sort(mus.begin(), mus.end(), [](const ex& x, const ex& y) {
+        return message_text(x, text_limit::report) < message_text(y, text_limit::report);
+    });
     out.converges = truth::yes;
     std::string conditions;
     for (const auto& r : signals::exponents_of(f, t))
@@ -267,13 +258,14 @@ algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, 
             if (known && v < GiNaC::numeric(-1, 1000000000) * GiNaC::numeric(1, 1000000000)) continue;  // < -1e-18
             if (is_zero_scalar(x) || (known && v > 0 && !(v < GiNaC::numeric(1, 1000000000) * GiNaC::numeric(1, 1000000000)))) {
                 out.converges = truth::no;
-                out.report = "the integral diverges: the exponent " + text(r.lambda) + " of the signal and the eigenvalue " +
-                             text(mu) + " of d have Re(r - mu) = " + text(x) +
+                out.report = "the integral diverges: the exponent " + message_text(r.lambda, text_limit::report) +
+                             " of the signal and the eigenvalue " + message_text(mu, text_limit::report) +
+                             " of d have Re(r - mu) = " + message_text(x, text_limit::report) +
                              " >= 0; the value is the analytic continuation q(d) p(d)^-1";
                 return out;
             }
             out.converges = truth::unknown;
-            const std::string c = text(x) + " < 0";
+            const std::string c = message_text(x, text_limit::report) + " < 0";
             if (conditions.find(c) == std::string::npos) conditions += (conditions.empty() ? "" : ", ") + c;
         }
     out.report = out.converges == truth::yes

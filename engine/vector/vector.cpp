@@ -285,6 +285,8 @@ ex vcross_eval(const ex& a, const ex& b) {
     return vcross(a, b).hold();
 }
 
+// As vcross_eval in shape (bilinear: sums and scalars taken out), but symmetric where the
+// cross product is antisymmetric (a x a = 0, b x a = -a x b).
 ex vdot_eval(const ex& a, const ex& b) {
     check_arg("dot", 1, a);
     check_arg("dot", 2, b);
