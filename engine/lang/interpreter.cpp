@@ -464,7 +464,7 @@ void session::ode_equation(mechanics::cauchy_problem& P, const node& eq, bool ve
 value session::ode_form(const node& n) {
     const std::string usage = " (usage: ode(x'' + a x' + b x = f, x(0) = x0, x'(0) = v0))";
     auto where = [&](const node& k) {
-        return source_location{files_.empty() ? "<string>" : files_.back(), k.line, k.column};
+        return source_location{current_file(), k.line, k.column};
     };
     if (n.kids.size() < 2) throw type_error("ode: expects an equation and initial conditions" + usage);
     const node& eq = *n.kids[0];

@@ -83,7 +83,7 @@ GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
 
 namespace {
 
-std::string text(const ex& e) { return message_text(e, 300); }
+std::string text(const ex& e) { return message_text(e, text_limit::signal_report); }
 
 // The matrix of multiplication by u (columns: u e_j).
 GiNaC::matrix multiplication_matrix(const algebra& A, const coeffs& u) {
@@ -317,10 +317,7 @@ void classify_in_class(const class_solution& s, const input_signal& in, system_r
     }
     // generic in the parameters: say where it stops holding
     const ex det = GiNaC::factor(tidy(A.determinant(s.pd)));
-    bool symbolic = false;
-    for (auto it = det.preorder_begin(); it != det.preorder_end(); ++it)
-        symbolic = symbolic || GiNaC::is_a<GiNaC::symbol>(*it);
-    if (symbolic)
+    if (has_symbol(det))
         out.report += "; for parameters with det p(d) = " + text(det) +
                       " not 0 (where it is 0, p shares a mode with the input)";
 }
@@ -443,7 +440,7 @@ algebra_response respond_over(const algebra_ptr& A, const coeffs& d, const std::
         const zero_decision z = decide_zero(residual);
         if (z.is_zero != truth::yes)
             throw algebra_error("response: the response does not satisfy the system (residual " +
-                                message_text(residual, 200) + (z.is_zero == truth::no ? ")" : ", not proved 0)"));
+                                message_text(residual, text_limit::report) + (z.is_zero == truth::no ? ")" : ", not proved 0)"));
     }
     if (algebra::equal(out.element, A->zero())) {
         out.kind = response_kind::filtered_out;

@@ -76,7 +76,7 @@ while IFS= read -r h; do
     case $rel in
         vector/vector_internal.h | algebra/sobrero_kernel.h | algebra/walsh_kernel.h | \
         algebra/multicomplex_transform.h | algebra/multicomplex_indexing.h | algebra/batched_exp.h | \
-        lang/statement_clock.h) ;;
+        mechanics/residual_proof.h | lang/statement_clock.h) ;;
         *) [[ -f $inc/$rel ]] || fail "public header not installed: $rel" ;;
     esac
 done < <(find "$src/engine" -mindepth 2 -maxdepth 2 -name '*.h' | sort)
