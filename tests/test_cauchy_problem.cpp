@@ -37,7 +37,7 @@ const application applications[] = {
      "E B v0"},
     {"charge position VI.1.58", "vector E, B, v0, r0; positive m",
      "ode(m*r'' = q*(r' x B + E), r(0) = r0, r'(0) = v0)", "q m", "E B v0 r0"},
-    // the Lorentz force next to the Coriolis term: K = (q/m B + 2 w) x, one operator (cauchy_problem.cpp)
+    // the Lorentz force next to the Coriolis term: K = (q/m B + 2 w) x, one operator (problem_reading.cpp)
     {"charge in a rotating frame", "vector E, B, w, v0, r0; positive m",
      "ode(m*r'' = q*(r' x B + E) - 2*m*(w x r'), r(0) = r0, r'(0) = v0)", "q m", "E B w v0 r0"},
     {"charge velocity in a rotating frame", "vector E, B, w, v0; positive m",
