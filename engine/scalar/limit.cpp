@@ -471,7 +471,10 @@ GiNaC::ex limit_at_point(std::size_t n, const near_point& near) {
         xs = near(offs);
     } catch (const std::exception& e) {
         if (!is_division_by_zero(e)) throw;
-        return lines_limit(n, near);
+        // which parameters it depends on is not known: lines are a proof with one only
+        if (n == 1) return lines_limit(n, near);
+        throw domain_error("the limit cannot be found: the expression divides by zero near the point as well, "
+                           "and with several parameters approaching it the lines alone are not a proof");
     }
     GiNaC::lst present;
     GiNaC::exmap zero;
