@@ -977,3 +977,86 @@ TEST(ExamplesAlgebras, InvalidTableIsNamed) {
     ASSERT_TRUE(json_string_field(errs[0], "error", message)) << err;
     EXPECT_NE(message.find("commutative"), std::string::npos) << message;
 }
+
+// ---------------------------------------------------------------------------------
+// the remarks of Chapter VI (examples/remarks.symrep, issue 29 item 11): each printed value
+// against an independent computation here (formulas worked by hand, a classical RK4)
+
+namespace {
+double to_double(const ex& e) { return ex_to<numeric>(GiNaC::evalf(e)).to_double(); }
+
+/// v' = (q/m) v x B(t), B = [sin t, cos 2t, 1/2], by classical RK4 (step h: error O(h^4)).
+std::vector<double> larmor_rk4(double qm, std::vector<double> v, double T, int n) {
+    auto f = [qm](double t, const std::vector<double>& y) {
+        const double B[3] = {std::sin(t), std::cos(2 * t), 0.5};
+        return std::vector<double>{qm * (y[1] * B[2] - y[2] * B[1]), qm * (y[2] * B[0] - y[0] * B[2]),
+                                   qm * (y[0] * B[1] - y[1] * B[0])};
+    };
+    auto axpy = [](const std::vector<double>& y, const std::vector<double>& k, double c) {
+        return std::vector<double>{y[0] + c * k[0], y[1] + c * k[1], y[2] + c * k[2]};
+    };
+    const double h = T / n;
+    double t = 0;
+    for (int i = 0; i < n; ++i, t += h) {
+        const auto k1 = f(t, v), k2 = f(t + h / 2, axpy(v, k1, h / 2)), k3 = f(t + h / 2, axpy(v, k2, h / 2)),
+                   k4 = f(t + h, axpy(v, k3, h));
+        for (int c = 0; c < 3; ++c) v[c] += h / 6 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
+    }
+    return v;
+}
+}  // namespace
+
+TEST(ExamplesRemarks, PrintedResultsByValue) {
+    const run_result& r = run_script("remarks.symrep");
+    ASSERT_EQ(r.status, 0) << r.err;
+    symbols S;
+    const ex t = S("t"), R = S("R"), a = S("a"), b = S("b"), X = S("X");
+
+    // (VI.1.63 remarks) q = 1, m = 2, B = [0, 0, 2], E = [1, 0, 3], v0 = [1, 2, -1]:
+    // centre E x B/|B|^2 = [0, -1/2, 0]; radius |v0_perp - centre| = |[1, 5/2, 0]|;
+    // pitch = (q/m) (E . B)/|B| times the period 2 pi m/(q |B|) = 2 pi 6/4
+    EXPECT_TRUE(same(parse_list(S, result_after(r.out, "centre of the helix (E x B/|B|^2) =", "expression")),
+                     {0, numeric(-1, 2), 0}));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "radius^2 =", "expression")), numeric(29, 4)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "pitch (advance of v . B/|B| over one period) =", "expression")),
+                     3 * GiNaC::Pi));
+
+    // (VI.2.47-49) B = (2 + sin t) b u, u = e3: v0 turned by -alpha about e3,
+    // alpha = (q/m) b int_0^t (2 + sin) = (3/2)(1/2)(3 + 1 - cos(3/2)); tolerance 1e-14 (double output)
+    const auto vl = parse_list(S, result_after(
+        r.out, "at q = 3, m = 2, b = 1/2, u = [0, 0, 1], v0 = [1, 2, -1], t = 3/2: v =", "list"));
+    ASSERT_EQ(vl.size(), 3u);
+    const double al = 0.75 * (4 - std::cos(1.5));
+    EXPECT_NEAR(to_double(vl[0]), std::cos(al) + 2 * std::sin(al), 1e-14);
+    EXPECT_NEAR(to_double(vl[1]), -std::sin(al) + 2 * std::cos(al), 1e-14);
+    EXPECT_NEAR(to_double(vl[2]), -1.0, 1e-15);
+
+    // (VI.3.162) the turning field: RK4 with 6000 steps on [0, 3/2] (error ~1e-13); tolerance 1e-10
+    const auto vt = parse_list(S, result_after(r.out, "at q = 3, m = 2, v0 = [1, 2, -1], t = 3/2: v =", "list"));
+    ASSERT_EQ(vt.size(), 3u);
+    const auto ref = larmor_rk4(1.5, {1, 2, -1}, 1.5, 6000);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(to_double(vt[c]), ref[c], 1e-10) << c;
+
+    // (VI.3.236) r = F_(-a e1)(R [cos bt, sin bt, 0]): the rotation by -a t about e1, worked by hand
+    const auto rd = parse_list(S, result_after(r.out, "(VI.3.236) r =", "expression"));
+    EXPECT_TRUE(same(rd, {R * GiNaC::cos(b * t), R * GiNaC::sin(b * t) * GiNaC::cos(a * t),
+                         -R * GiNaC::sin(b * t) * GiNaC::sin(a * t)}));
+    // X^2 - 2 printed irreducible over Q: no linear factor
+    const ex fx = parse(S, result_after(r.out, "a/b = 1/sqrt(2): (b/a)^2 = 2, and X^2 - 2 has no rational root:",
+                                        "expression"));
+    EXPECT_TRUE(same(fx, GiNaC::pow(X, 2) - 2));
+
+    // (Thm V.3.4) the transform of the weighting function over sobrero(2) at d = s0 + eps, s0 = 2 + 5 j:
+    // sum_k eps^k H^(k)(s0)/k! (V.3.46), H = (s + 3)/(s^2 + 2 s + 5), j read as the imaginary unit
+    const ex eps = S("eps"), j = S("j");
+    const ex HS = parse(S, result_after(r.out, "h = L^-1[(s + 3)/(s^2 + 2 s + 5)] is the transmittance H(d) =",
+                                        "element"));
+    const GiNaC::symbol sv("s");
+    const ex H = (sv + 3) / (sv * sv + 2 * sv + 5);
+    ex expected = 0;
+    for (int k = 0; k <= 2; ++k) {
+        const ex c = GiNaC::expand(GiNaC::normal(H.diff(sv, k).subs(sv == 2 + 5 * GiNaC::I) / GiNaC::factorial(k)));
+        expected += GiNaC::pow(eps, k) * (GiNaC::real_part(c) + j * GiNaC::imag_part(c));
+    }
+    EXPECT_TRUE(same(GiNaC::expand(HS), GiNaC::expand(expected)));
+}
