@@ -785,7 +785,8 @@ void register_mechanics_builtins(registry& r) {
          "m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 with w = s(t) u (s constant or not): with "
          "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. For a "
          "turning w(t) or a central field g(|r|) r (Thm VI.3.2.2): [m (|p|^2/2 + V(|r|)) (V' = g |r|/m, when "
-         "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0).",
+         "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0). "
+         "The vector invariants themselves: vector_first_integrals(P).",
          "(VI.3.140-141)", "vector u, r0, v0\nw := (1 + sin(t))*u\nfirst_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
          "4*r = 0, r(0) = r0, r'(0) = v0))", 1, 1, builtin_first_integrals},
         {"check", "check(P, s [, values])",

@@ -99,13 +99,17 @@ std::optional<ex> rotated_adjoint(const ex& w, const ex& x, const ex& t) {
         if (!q) return std::nullopt;
         y = *q;
     } else {
+        // (Q^T x)_i = sum_j Q_ji (x . e_j), Q_ji the components of the literal Q e_i
+        const ex e[3] = {vector_literal(1, 0, 0), vector_literal(0, 1, 0), vector_literal(0, 0, 1)};
         ex c[3];
         for (int i = 0; i < 3; ++i) {
-            const auto q = closed_rotation(F, vector_literal(ex(i == 0 ? 1 : 0), ex(i == 1 ? 1 : 0), ex(i == 2 ? 1 : 0)), t);  // Q e_i
-            if (!q) return std::nullopt;
-            c[i] = dot(*q, x);
+            const auto q = closed_rotation(F, e[i], t);  // Q e_i
+            if (!q || !vector_symbols(*q).empty()) return std::nullopt;
+            const ex Qe = subs_components(*q, {});
+            c[i] = 0;
+            for (unsigned j = 0; j < 3; ++j) c[i] += GiNaC::normal(Qe.op(j)) * dot(e[j], x);
         }
-        y = canonical(vector_literal(c[0], c[1], c[2]));
+        y = vector_literal(c[0], c[1], c[2]);
     }
     // (Thm VI.3.1.1, 6) Q (Q^T x) = x
     const auto back = closed_rotation(F, y, t);
