@@ -84,7 +84,7 @@ std::vector<two_body_quantity> two_body_characteristics(const cauchy_problem& CM
     const ex p1 = v1 + cross(w, x1), p2 = v2 + cross(w, x2);
     const ex V = m * subs_vectors(*REL.potential, {{REL.r, r}});
     std::vector<two_body_quantity> out;
-    auto add = [&](const std::string& name, const ex& e) { out.push_back({name, e, false, w}); };
+    auto add = [&](const std::string& name, const ex& e) { out.push_back({name, is_vector(e) ? canonical(e) : e, false, w}); };
     auto constant = [&](const ex& e, const std::string& what) { require_zero(B.along(e), who + ": (" + what + ")'"); };
     auto rotating = [&](const ex& X, const std::string& what) {
         require_zero(B.along(X) + cross(w, B.on(X)), who + ": " + what + "' + w x " + what);
@@ -126,7 +126,7 @@ std::vector<two_body_quantity> two_body_characteristics(const cauchy_problem& CM
     const ex H0 = M * (CM.v0 + cross(w0, CM.r0));
     const ex L00 = m * cross(REL.r0, REL.v0 + cross(w0, REL.r0)) + M * cross(CM.r0, CM.v0 + cross(w0, CM.r0));
     auto by_rotation = [&](const std::string& name, const ex& X0) {
-        if (const auto y = rotated_back(w, X0, t)) add(name, *y);
+        if (const auto y = rotated_back(w, X0, t)) out.push_back({name, *y, false, w});  // the form of VI.2.12
         else out.push_back({name + "   (Q numeric: X0 given)", X0, true, w});
     };
     by_rotation("H(t) = F_(-w)(H0), H0 = M (V0 + w(0) x R0)   (VI.3.241, 267)", H0);
