@@ -7,6 +7,7 @@
 #include "mechanics/first_integrals.h"
 #include "mechanics/turning_frame.h"
 #include "scalar/equality.h"
+#include "scalar/scalar.h"
 #include "vector/vector.h"
 
 namespace symrep::mechanics {
@@ -14,12 +15,6 @@ namespace symrep::mechanics {
 using GiNaC::ex;
 
 namespace {
-
-bool has_any_symbol(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) return true;
-    return false;
-}
 
 // zero: proved 0; nonzero: a number (no symbol left) seen nonzero at 40 and 80 digits; else neither
 truth zero_truth(const ex& x) {
@@ -31,7 +26,7 @@ truth zero_truth(const ex& x) {
             if (s == 1 || s == -1) return truth::no;
         }
     }
-    if (has_any_symbol(x)) return truth::unknown;
+    if (has_symbol(x)) return truth::unknown;
     const ex d = is_vector(x) ? dot(x, x) : x;
     return decided_sign(d) == 2 ? truth::unknown : truth::no;
 }
@@ -46,7 +41,7 @@ std::string cannot_decide(const std::string& who, const std::string& what, const
 int decided_sign(const ex& x0) {
     const ex x = GiNaC::normal(x0);
     if (equal(x, 0)) return 0;
-    if (!has_any_symbol(x)) {
+    if (!has_symbol(x)) {
         GiNaC::numeric a, b;
         if (!evaluate_numeric(x, 40, a) || !evaluate_numeric(x, 80, b)) return 2;
         if (!a.is_real() || !b.is_real()) return 2;
