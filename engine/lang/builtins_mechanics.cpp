@@ -23,6 +23,9 @@
 #include "mechanics/scene.h"
 #include "numeric/reference.h"
 #include "mechanics/fixed_axis.h"
+#include "mechanics/first_integrals.h"
+#include "mechanics/orbit_decisions.h"
+#include "mechanics/two_body.h"
 #include "mechanics/relative_motion.h"
 #include "mechanics/turning_frame.h"
 #include "mechanics/reduced_solution.h"
@@ -582,6 +585,155 @@ value builtin_yamanaka_ankersen(const builtin& b, const args_t& a, context&) {
 
 }  // namespace
 
+// ---- the first integrals as vectors, the generalized potentials, the two-body problem and the
+// decisions of VI.3.3-VI.3.4 (mechanics/first_integrals.h, two_body.h, orbit_decisions.h)
+namespace {
+
+// F_(-w)(X0): closed, or the rotation problem (Q numeric) as a solution by reduction (as F(-w, X0))
+value rotated_value(const ex& w, const ex& X0, const ex& t) {
+    if (const auto y = mechanics::rotated_back(w, X0, t)) return value(*y);
+    return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+        mechanics::reduced_solution{mechanics::rotation_problem(-w, X0, t), {}, true})});
+}
+
+value builtin_vector_first_integrals(const builtin& b, const args_t& a, context&) {
+    const auto& P = problem_arg(a, 0, b);
+    list out;
+    for (const auto& I : mechanics::vector_first_integrals(P))
+        out.push_back(value(list{value(I.name), value(I.quantity), rotated_value(P.turning ? P.turning->terms.w
+                                                                                             : mechanics::read_central_motion(P, b.name).w,
+                                                                                   I.initial, P.t)}));
+    return value(out);
+}
+
+value builtin_generalized_potentials(const builtin& b, const args_t& a, context&) {
+    list out;
+    for (const auto& V : mechanics::generalized_potentials(problem_arg(a, 0, b)))
+        out.push_back(value(list{value(V.name), value(V.V)}));
+    return value(out);
+}
+
+value builtin_two_body(const builtin& b, const args_t& a, context& c) {
+    const auto& CM = problem_arg(a, 0, b);
+    const auto& REL = problem_arg(a, 1, b);
+    ex s[4];
+    const char* names[4] = {"x1", "x2", "v1", "v2"};
+    for (int i = 0; i < 4; ++i) {
+        s[i] = c.symbol(names[i]);
+        register_vector(s[i]);
+    }
+    list out;
+    for (const auto& q : mechanics::two_body_characteristics(CM, REL, arg_ex(a, 2, b), arg_ex(a, 3, b), s[0], s[1], s[2],
+                                                             s[3]))
+        out.push_back(value(list{value(q.name), q.by_rotation ? rotated_value(q.w, q.value, REL.t) : value(q.value)}));
+    return value(out);
+}
+
+value orbit_decision_value(const builtin& b, const mechanics::orbit_decision& d, context& c) {
+    c.out() << b.name << ": " << d.reason << "; " << (b.name == "bounded" ? "E = " : "u x L_c0 = ") << print_ex(d.quantity)
+            << "\n";
+    return value(d.answer);
+}
+
+value builtin_bounded(const builtin& b, const args_t& a, context& c) {
+    const auto vals = a.size() == 2 ? scene_values(a, 1, b) : mechanics::parameter_values{};
+    return orbit_decision_value(b, mechanics::bounded(problem_arg(a, 0, b), vals), c);
+}
+
+value builtin_planar(const builtin& b, const args_t& a, context& c) {
+    const auto vals = a.size() == 2 ? scene_values(a, 1, b) : mechanics::parameter_values{};
+    return orbit_decision_value(b, mechanics::planar(problem_arg(a, 0, b), vals), c);
+}
+
+value builtin_F_adjoint(const builtin& b, const args_t& a, context& c) {
+    const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
+    if (w.is_zero() || x.is_zero() || equal(w, 0)) return value(x);
+    try {
+        mechanics::require_value_at_zero(w, t, "w(t)");
+    } catch (const domain_error& e) {
+        throw domain_error(b.name + ": " + e.what());
+    }
+    const auto y = mechanics::rotated_adjoint(w, x, t);
+    if (!y)
+        throw domain_error(b.name + ": w(t) = " + print_ex(w) + " turns and Q has no closed form: F*_w(x) = Q^T x is "
+                           "not available (the reduction uses Q psi = F(-w, psi))");
+    return value(vector_symbols(*y).empty() ? subs_components(*y, {}) : *y);
+}
+
+void register_two_body_builtins(registry& r) {
+    add_builtins(r, section, {
+        {"vector_first_integrals", "vector_first_integrals(P)",
+         "The vector first integrals (VI.2.99, 109; VI.3.141, 221) of P, m (r'' + 2 w x r' + w' x r + w x (w x r)) + "
+         "m f(|r|) r/|r| = 0 with any w(t) (a constant k r included): a list of [statement, X, F_(-w)(X0)] with X in "
+         "r, r' and X0 its value at t = 0: X = r x (r' + w x r), X0 = Omega0 = r0 x (v0 + w(0) x r0), and for free "
+         "motion also X = r' + w x r (VI.3.240). Each is proved: X' + w x X = 0 along the equation (exactly), so "
+         "X = F_(-w)(X0), the rotation tensor of the frame (closed for a fixed direction or a regular precession, "
+         "proved y' + w x y = 0 and y(0) = X0; for a turning w a solution by reduction, evaluated by eval).",
+         "(VI.2.99), (VI.2.109), (VI.3.141), (VI.3.211), (VI.3.221-223)",
+         "vector u, r0, v0\nw := (1 + cos(t))*u\nvector_first_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
+         "k*r/|r|^3 = 0, r(0) = r0, r'(0) = v0))",
+         1, 1, builtin_vector_first_integrals},
+        {"generalized_potentials", "generalized_potentials(P)",
+         "The generalized potential energies V of P (as for vector_first_integrals, with an elementary potential U, "
+         "U' = f): m |r'|^2/2 + V is constant along every solution. A list of [statement, V]: V(t, r, r') = "
+         "m (w, r, r') + m |w x r|^2/2 + m U(|r|) (VI.2.110, VI.3.225); for w = s(t) u of fixed direction "
+         "V(t, r) = m w . Omega0 - m |w x r|^2/2 + m U (VI.2.113-114, VI.3.227, using u . (r x p) = u . Omega0); "
+         "for a constant w the centrifugal potential V(r) = -m |w x r|^2/2 + m U (VI.2.115, VI.3.229). Each proved "
+         "(the derivative along the equation exactly 0; the fixed-direction form as the first plus "
+         "m s(t) (u . Omega0 - u . Omega), u . Omega proved constant).",
+         "(VI.2.110-115), (VI.3.224-230)",
+         "vector u, r0, v0\ngeneralized_potentials(ode(r'' + 2*W*u x r' + W*u x (W*u x r) + k*r/|r|^3 = 0, r(0) = r0, "
+         "r'(0) = v0))",
+         1, 1, builtin_generalized_potentials},
+        {"two_body", "two_body(CM, REL, m1, m2)",
+         "The two-body problem in a frame rotating with w(t) (VI.3.4.2): CM the centre of mass's free problem "
+         "(R'' + 2 w x R' + w' x R + w x (w x R) = 0), REL the relative one (r = x2 - x1, the same w, a central "
+         "field f(|r|) r/|r| per unit mass), m1, m2 the masses. The coupled equations are checked to give CM and REL "
+         "back. Returns [statement, value] pairs in the vector symbols x1, x2 (positions), v1, v2 (velocities; "
+         "declared vectors by the call): P, K0, E_cin, I0 w, V_c, V (VI.3.253-260); H, L0, T with H = P + M w x r_c, "
+         "L0 = K0 + I0 w, T = E_cin + V_c (VI.3.237-258), H' + w x H = 0, L0' + w x L0 = 0, T + V constant; "
+         "H(t) = F_(-w)(H0), L0(t) = F_(-w)(L0^0) from CM's and REL's initial values (closed for a fixed direction: "
+         "VI.3.267-268); the generalized potentials (VI.3.264-266); the centre-of-mass frame H^c = 0, L_c, L_c(t), "
+         "T^c, and E_cin^c + V constant with its fixed-direction form and Jacobi's integral (VI.3.273-291). Every "
+         "statement is proved (identities by the zero test; constants by the derivative along the coupled equations).",
+         "(VI.3.237-268), (VI.3.273-291)",
+         "vector R0, V0, r0, u0\nw := [0, 0, W]\nCM := ode(R'' + 2*w x R' + w x (w x R) = 0, R(0) = R0, R'(0) = V0)\n"
+         "REL := ode(r'' + 2*w x r' + w x (w x r) + G*M*r/|r|^3 = 0, r(0) = r0, r'(0) = u0)\ntwo_body(CM, REL, m1, m2)[6]",
+         4, 4, builtin_two_body},
+        {"bounded", "bounded(P [, values])",
+         "Consequence VI.3.3.2 decided: P is Kepler's problem in a frame rotating with any w(t), "
+         "r'' + 2 w x r' + w' x r + w x (w x r) + k r/|r|^3 = 0 with k > 0. Computes E = |v0 + w(0) x r0|^2/2 - k/|r0| "
+         "(VI.3.154; values put in as for eval) and returns true when E < 0 (|r| <= k/|E|), false when E >= 0 (a "
+         "parabola or hyperbola, or a radial motion outwards); prints the reason and E. An error says \"cannot "
+         "decide\" when the sign of E (or of k) is not established, and names a radial fall into the centre.",
+         "(VI.3.153-154)",
+         "vector r0, v0\nw := (1 + cos(t))*[0, 0, 1]\nK := ode(r'' + 2*w x r' + w' x r + w x (w x r) + k*r/|r|^3 = 0, "
+         "r(0) = r0, r'(0) = v0)\nbounded(K, [k = 1, r0 = [1, 0, 0], v0 = [0, 0.5, 0]])",
+         1, 2, builtin_bounded},
+        {"planar", "planar(P [, values])",
+         "The planarity criterion (VI.3.281-284) decided: P a rotating-frame problem with a central field and w = "
+         "s(t) u of fixed direction. The orbit lies in the plane through the centre normal to L_c = r x (r' + w x r), "
+         "which turns with L_c = F_(-w)(L_c0): true when that plane is fixed, u x L_c0 = 0 (VI.3.282; with "
+         "L_c0 != 0 the same as r0 . u = 0 and v0 . u = 0, VI.3.284), false when u x L_c0 != 0 (the plane turns "
+         "about u). A radial motion (L_c0 = 0) is planar when r0 . u = 0 or r0 x u = 0, and otherwise refused. "
+         "Prints the reason; \"cannot decide\" when u x L_c0 is neither proved 0 nor a nonzero number.",
+         "(VI.3.281-284)",
+         "vector r0, v0\nw := (1/2 + sin(t))*[0, 0, 1]\nplanar(ode(r'' + 2*w x r' + w' x r + w x (w x r) + k*r/|r|^3 = "
+         "0, r(0) = r0, r'(0) = v0), [r0 = [a, b, 0], v0 = [c, d, 0]])",
+         1, 2, builtin_planar},
+        {"F_adjoint", "F_adjoint(w, x)",
+         "The transformation F*_w(x) = Q^T x of Thm VI.3.1.1 (VI.3.119), Q the tensor of F_(-w) (Q' = -W Q, "
+         "Q(0) = I): the reduction psi = F*_w(r) of Thm VI.3.2.1. In closed form where Q is (a fixed direction: "
+         "the rotation by the opposite angle, = F(w, x); a regular precession: (Q^T x)_i = (Q e_i) . x), proved "
+         "Q (Q^T x) = x; x may depend on t. Refused for a turning w (Q numeric).",
+         "(VI.3.119), (Thm VI.3.1.1)",
+         "vector x\nF_adjoint([sin(t), cos(t), 1], x)",
+         2, 2, builtin_F_adjoint},
+    });
+}
+
+}  // namespace
+
 void register_mechanics_builtins(registry& r) {
     add_builtins(r, section, {
         {"cross", "cross(a, b)",
@@ -633,7 +785,8 @@ void register_mechanics_builtins(registry& r) {
          "m (r'' + 2 w x r' + w' x r + w x (w x r)) + k r = 0 with w = s(t) u (s constant or not): with "
          "p = r' + w x r, the list [energy (m |p|^2 + k |r|^2)/2, u . (r x p), |r x p|^2], in r and r'. For a "
          "turning w(t) or a central field g(|r|) r (Thm VI.3.2.2): [m (|p|^2/2 + V(|r|)) (V' = g |r|/m, when "
-         "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0).",
+         "elementary), |r x p|^2]. Each is constant along every solution (derivative along the equation exactly 0). "
+         "The vector invariants themselves: vector_first_integrals(P).",
          "(VI.3.140-141)", "vector u, r0, v0\nw := (1 + sin(t))*u\nfirst_integrals(ode(r'' + 2*w x r' + w' x r + w x (w x r) + "
          "4*r = 0, r(0) = r0, r'(0) = v0))", 1, 1, builtin_first_integrals},
         {"check", "check(P, s [, values])",
@@ -710,6 +863,7 @@ void register_mechanics_builtins(registry& r) {
          "", "yamanaka_ankersen(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)",
          6, 6, builtin_yamanaka_ankersen},
     });
+    register_two_body_builtins(r);
 }
 
 }  // namespace symrep::lang

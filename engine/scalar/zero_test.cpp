@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -331,6 +332,39 @@ bool is_zero_arctangent_sum(const GiNaC::ex& x) {
     return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v)) < 1;
 }
 
+// The arguments of sin and cos that are not polynomials in symbols (a(t) = |u| (t + sin t), the
+// angle of a rotation at a variable rate, VI.2.10), each up to a numeric factor, as fresh real
+// symbols: sin(2 a) -> sin(2 theta). Sound for a zero proof: an identity that holds for every
+// theta holds at theta = a(t). Nothing when there is no such argument.
+std::optional<GiNaC::ex> composite_trig_arguments_as_symbols(const GiNaC::ex& y) {
+    struct replace : GiNaC::map_function {
+        std::map<GiNaC::ex, GiNaC::realsymbol, GiNaC::ex_is_less> atoms;
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            const bool s = GiNaC::is_the_function<GiNaC::sin_SERIAL>(x), c = GiNaC::is_the_function<GiNaC::cos_SERIAL>(x);
+            if (!s && !c) return x.map(*this);
+            const GiNaC::ex A = x.op(0);
+            GiNaC::ex k = 1, B = A;
+            if (GiNaC::is_a<GiNaC::mul>(A) && GiNaC::is_a<GiNaC::numeric>(A.op(A.nops() - 1))) {
+                k = A.op(A.nops() - 1);
+                B = A / k;
+            }
+            GiNaC::lst syms;
+            bool polynomial = true;
+            for (auto it = B.preorder_begin(); it != B.preorder_end(); ++it) {
+                if (GiNaC::is_a<GiNaC::symbol>(*it)) syms.append(*it);
+                else if (GiNaC::is_a<GiNaC::function>(*it) || GiNaC::is_a<GiNaC::constant>(*it)) polynomial = false;
+            }
+            if (polynomial && B.is_polynomial(syms)) return x;
+            auto at = atoms.find(B);
+            if (at == atoms.end()) at = atoms.emplace(B, GiNaC::realsymbol()).first;
+            return s ? GiNaC::sin(k * at->second) : GiNaC::cos(k * at->second);
+        }
+    } r;
+    const GiNaC::ex z = r(y);
+    if (r.atoms.empty()) return std::nullopt;
+    return z;
+}
+
 }  // namespace
 
 bool is_zero_scalar(const GiNaC::ex& x) {
@@ -351,7 +385,10 @@ bool is_zero_scalar(const GiNaC::ex& x) {
     // radicals that the exponential form brings in (sqrt(34) from e^(i atan(5/3))) over primes too
     const GiNaC::ex z = expand_rational_logs(trig_exponential_form(y));
     guard_expansion(z, "zero test", true);
-    return GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z);
+    if (GiNaC::normal(z).is_zero() || is_zero_modulo_square_roots(z)) return true;
+    // (Thm VI.2.1.1, properties 5 and 7 at a variable rate) sin^2 a + cos^2 a = 1 for a composite a
+    if (const auto s = composite_trig_arguments_as_symbols(y)) return is_zero_scalar(*s);
+    return false;
 }
 
 }  // namespace symrep
