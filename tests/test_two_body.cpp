@@ -120,9 +120,9 @@ TEST(TwoBody, CharacteristicsAlongTheCoupledMotion) {
         for (const auto& [now, closed] : {std::pair<const char*, const char*>{"H =", "H(t)"}, {"L0 =", "L0(t)"},
                                           {"L_c =", "L_c(t)"}}) {
             const GiNaC::ex a = at(item(now)), b = at(item(closed));
-            double d = 0;
-            for (unsigned i = 0; i < 3; ++i) d += std::pow(number_of(a.op(i)) - number_of(b.op(i)), 2);
-            EXPECT_LT(std::sqrt(d), 1e-9 * size_of(b)) << now << " at t = " << times[k];
+            double gap = 0;
+            for (unsigned i = 0; i < 3; ++i) gap += std::pow(number_of(a.op(i)) - number_of(b.op(i)), 2);
+            EXPECT_LT(std::sqrt(gap), 1e-9 * size_of(b)) << now << " at t = " << times[k];
         }
         EXPECT_LT(size_of(at(item("H^c"))), 1e-12) << times[k];
     }
