@@ -48,7 +48,7 @@ TEST(GeneralForcing, ConstantWFirstOrder) {
     EXPECT_NE(shown.find("int_0^t (cos(sqrt(c^2)*tau)/(1 + tau^2)) dtau"), std::string::npos) << shown;
     EXPECT_TRUE(t.val("check(P, s)").as_bool());
     ASSERT_EQ(t.run("vals := [c = 1.3, a = 0.7, u = [0.2, -0.5, 1], r0 = [1, 0.5, -0.2]]"), 0);
-    EXPECT_LT(number(t, "verify(P, s, vals, 8)"), 1e-8);
+    EXPECT_LT(number(t, "verify(P, s, vals, 8, 50)"), 1e-8);
     // z: r0_z + a u_z atan(t) (w along z leaves it alone)
     const double z = component(t.val("eval(s, vals, t = 2)"), 2);
     EXPECT_NEAR(z, -0.2 + 0.7 * std::atan(2.0), 1e-10);
@@ -67,9 +67,9 @@ TEST(GeneralForcing, ConstantWSecondOrderAndVectorLiterals) {
         << t.err.str();
     EXPECT_TRUE(t.val("check(Q, q)").as_bool());
     EXPECT_TRUE(t.val("check(L, l)").as_bool());
-    EXPECT_LT(number(t, "verify(Q, q, [w = [0.3, -0.7, 0.4], b = [1, 0, 2], r0 = [1, 1, 0], v0 = [0, 0.5, 0]], 5, 40)"),
+    EXPECT_LT(number(t, "verify(Q, q, [w = [0.3, -0.7, 0.4], b = [1, 0, 2], r0 = [1, 1, 0], v0 = [0, 0.5, 0]], 5, 20)"),
               1e-8);
-    EXPECT_LT(number(t, "verify(L, l, [b = [1, 0, 2], r0 = [1, 1, 0], v0 = [0, 0.5, 0]], 6)"), 1e-8);
+    EXPECT_LT(number(t, "verify(L, l, [b = [1, 0, 2], r0 = [1, 1, 0], v0 = [0, 0.5, 0]], 6, 50)"), 1e-8);
     // along W (b too) z'' = exp(-t^2) + sin(t): z = int_0^t (t - tau) (exp(-tau^2) + sin(tau)) dtau,
     // at t = 1 (sqrt(pi) erf(1) - 1 + exp(-1))/2 + 1 - sin(1)
     const double z = component(t.val("eval(l, [b = [0, 0, 1], r0 = [0, 0, 0], v0 = [0, 0, 0]], t = 1)"), 2);
@@ -82,6 +82,19 @@ TEST(GeneralForcing, QuasiPolynomialForcingStaysClosed) {
     test_session t;
     ASSERT_EQ(t.run("vector w, a, r0\ns := solve(ode(r' + w x r = t*exp(-t)*a, r(0) = r0))"), 0) << t.err.str();
     EXPECT_FALSE(symrep::num::has_integral(t.val("s").as_ex()));
+}
+
+// A scalar problem takes the same path: y'' + 4 y = exp(-t^2), printed in the language's
+// notation (int_0^t ... dtau, not GiNaC's integral(...)); y(1) = cos 2 + int_0^1 sin(2 (1 - s))
+// exp(-s^2) ds/2 = -0.12201784436345320040 (mpmath quad, 20 digits).
+TEST(GeneralForcing, ScalarProblem) {
+    test_session t;
+    ASSERT_EQ(t.run("Y := ode(y'' + 4*y = exp(-t^2), y(0) = 1, y'(0) = 0)\ny := solve(Y)"), 0) << t.err.str();
+    const std::string shown = symrep::lang::print_value(t.val("y"));
+    EXPECT_NE(shown.find("int_0^t (cos(2*tau)*exp(-tau^2)) dtau"), std::string::npos) << shown;
+    EXPECT_EQ(shown.find("integral("), std::string::npos) << shown;
+    EXPECT_TRUE(t.val("check(Y, y)").as_bool());
+    EXPECT_NEAR(number(t, "eval(y, [], t = 1)"), -0.12201784436345320040, 1e-12);
 }
 
 // (VI.2) a fixed axis with a varying rate, w = (1 + cos t) u: a free term along u (the inertial
@@ -100,9 +113,9 @@ TEST(GeneralForcing, FixedAxis) {
     EXPECT_TRUE(t.val("check(G, g)").as_bool());
     EXPECT_TRUE(t.val("check(C, c)").as_bool());
     ASSERT_EQ(t.run("vals := [u = [0, 0.6, 0.8], b = [1, 0.5, 0.3], r0 = [1, 0.5, -0.2], v0 = [0.1, 0.3, 0.7]]"), 0);
-    EXPECT_LT(number(t, "verify(F, f, vals, 6, 50)"), 1e-8);
-    EXPECT_LT(number(t, "verify(G, g, vals, 6)"), 1e-8);
-    EXPECT_LT(number(t, "verify(C, c, vals, 5)"), 1e-8);
+    EXPECT_LT(number(t, "verify(F, f, vals, 6, 20)"), 1e-8);
+    EXPECT_LT(number(t, "verify(G, g, vals, 6, 50)"), 1e-8);
+    EXPECT_LT(number(t, "verify(C, c, vals, 5, 50)"), 1e-8);
     // along u the rotation does nothing: u . g = u . r0 + |u|^2 atan(t) (|u| = 1)
     const auto v = t.val("eval(g, vals, t = 3)");
     EXPECT_NEAR(0.6 * component(v, 1) + 0.8 * component(v, 2), 0.6 * 0.5 - 0.8 * 0.2 + std::atan(3.0), 1e-10);

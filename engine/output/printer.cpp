@@ -2,6 +2,7 @@
 #include "output/printer.h"
 #include "output/precedence.h"
 
+#include "numeric/quadrature.h"
 #include "scalar/floats.h"
 #include "scalar/scalar.h"
 #include "vector/vector.h"
@@ -447,7 +448,9 @@ const bool message_printer_registered = (set_message_printer(&print_ex), true);
 }  // namespace
 
 std::string print_ex(const ex& e) {
-    if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e))) return symrep::to_string(e);
+    // integral objects (a scalar Duhamel integral of mechanics/, int_0^t f dtau): the vector printer's notation
+    if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e) || num::has_integral(e)))
+        return symrep::to_string(e);
     if (is_a<GiNaC::relational>(e) && (involves_vectors(e.op(0)) || involves_vectors(e.op(1))))
         return print_ex(e.op(0)) + " = " + print_ex(e.op(1));
     return pr(e).text;
