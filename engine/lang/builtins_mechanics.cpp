@@ -772,10 +772,14 @@ void register_mechanics_builtins(registry& r) {
          "A linear Cauchy problem for x(t): the equation (x, x', x'' ... stand for the unknown and its "
          "derivatives in t) and one initial condition per order. x is a vector when an initial value is. "
          "The operator part must be a polynomial in one K = w x (terms c x, c w x x, c w x (w x x), "
-         "c (w . x) w); the free part a quasi-polynomial in t times constant vectors. Also the rotating-frame "
+         "c (w . x) w); the free part functions of t times constant vectors (or a literal [f1(t), f2(t), f3(t)]): "
+         "quasi-polynomials in closed form, any other function finite for t >= 0 (a/(1 + t^2), exp(-t^2)) by its "
+         "Duhamel integral int_0^t Y(t - tau) f(tau) dtau (VI.1.26-38 for every f), evaluated by quadrature; one "
+         "singular at some t >= 0 (1/(t - 1)) is refused. Also the rotating-frame "
          "form m (r'' + 2 w x r' + w' x r + w x (w x r)) + g(|r|) r + F(t) = 0 with w(t) of fixed direction "
-         "(closed form; F across the axis by integral objects) or turning, and a central field g(|r|) r "
-         "(k r/|r|^3: Kepler) without F (the reduction of Thm VI.3.2.1). A second-order problem without r itself "
+         "(closed form; F by integral objects) or turning, and a central field g(|r|) r "
+         "(k r/|r|^3: Kepler; with F only for a constant g: psi'' + g/m psi = Q^T f, Thm VI.3.2.1 with a force) "
+         "(the reduction of Thm VI.3.2.1). A second-order problem without r itself "
          "(m r'' = q (r' x B(t) + E)) is solved for v = r' and r = r(0) + int_0^t v (VI.2.50-52). The problem is "
          "checked when it is made.",
          "(VI.1.26), (VI.1.29), (VI.1.47), (VI.1.62), (VI.1.68)", "vector w, g, r0, v0\nP := ode(r'' + 2*w x r' + w x (w x r) = g, r(0) = r0, r'(0) = v0)",

@@ -12,8 +12,10 @@
 // in one operator K = w x (w a constant vector symbol, the same in every term):
 // each term is a scalar times x^(m), w x x^(m), w x (w x x^(m)) or w (w . x^(m))
 // (= K^2 x^(m) + |w|^2 x^(m)). Its free part (the terms without an unknown)
-// must be a sum of quasi-polynomials in t (t^k e^(a t) cos(b t), sin(b t))
-// times constant vectors. Nothing else is assumed: the orders, the
+// is a sum of functions of t times constant vectors: quasi-polynomials (t^k e^(a t) cos(b t),
+// sin(b t)) solved in closed form by convolution, any other function finite for t >= 0
+// (a/(1 + t^2), exp(-t^2)) by its Duhamel integral object (operator_form::general, VI.1.26-38);
+// a function singular at some t >= 0 (1/(t - 1)) is refused by name. Nothing else is assumed: the orders, the
 // coefficients (symbolic or numeric) and the forcing are read from E.
 //
 // reduce() reads E into the operator form of operator_ode.h (the algebra of K,
@@ -79,12 +81,18 @@ struct operator_form {
     std::vector<std::pair<std::string, GiNaC::ex>> data;  ///< placeholder name -> vector (or scalar)
     GiNaC::ex axis;    ///< w of K = w x; 0 when no term has an operator (then K = 0)
     GiNaC::ex Omega;   ///< the positive symbol standing for |w| in ode (0 without axis)
+    /// The terms c(t) V of the right side whose c is not a quasi-polynomial (VI.1.26-38 hold for
+    /// every f): not in ode; solve() adds their Duhamel integrals int_0^t Y(t - tau) c(tau) V dtau,
+    /// Y the impulse response in the algebra of K (cauchy_solve.cpp). Each c is finite for t >= 0
+    /// (num::require_finite_on_half_line).
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> general;
 };
 
 /// Reads E as sum_m A_m(K) x^(m) = sum_j q_j(t) F_j. Throws domain_error naming
 /// the offending term when E is not linear in the unknowns, when two different
 /// vectors act on x by x (the operators do not commute), when a coefficient
-/// depends on t, or when the free part is not a quasi-polynomial in t.
+/// depends on t, or when a free term that is not a quasi-polynomial in t may be singular at
+/// some t >= 0 (such terms otherwise go into operator_form::general).
 operator_form reduce(const cauchy_problem& P);
 
 /// Reads P once, for solve() and the solvers after it, and keeps the reading in P: the

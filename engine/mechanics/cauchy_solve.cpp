@@ -8,6 +8,7 @@
 #include "mechanics/turning_frame.h"
 #include "mechanics/solution_witness.h"
 
+#include <algorithm>
 #include <map>
 
 #include "scalar/scalar.h"
@@ -42,6 +43,37 @@ ex positive_trig_arguments(const ex& e, const ex& t) {
 }
 
 }  // namespace
+
+// (VI.1.26-38: r = F_(-w t) r0 + int_0^t exp(-W (t - tau)) f(tau) dtau, for every f) the response
+// with zero initial values to each term c(t) V of F.general: int_0^t Y(t - tau) V c(tau) dtau
+// with Y(t) V = d/dt (S(t) V), S(t) V the response to the constant force V (S(0) = 0, so that
+// d/dt int_0^t S(t - tau) V c(tau) dtau is that integral), S from the operator solver in the
+// algebra of K and read coordinate-free: Y(t) V = sum_j g_j(t) V_j (V, w x V, w x (w x V)),
+// each int_0^t g_j(t - tau) c(tau) dtau by duhamel() (fixed_axis.h).
+ex general_response(const cauchy_problem& P, const operator_form& F) {
+    const rotation_operator_algebra R(F.Omega);
+    ex x = 0;
+    for (const auto& [c, V] : F.general) {
+        operator_form S = F;
+        S.general.clear();
+        S.ode.forcing = {{quasi_polynomial::from_ex(ex(1), P.t), 0, "G"}};
+        S.data = {{"G", V}};
+        operator_solution sol = solve(S.ode, R, P.t);
+        sol.terms.erase(std::remove_if(sol.terms.begin(), sol.terms.end(),
+                                       [](const placeholder_coefficients& pc) { return pc.vector != "G"; }),
+                        sol.terms.end());
+        const ex step = vector_solution(P, S, sol);
+        if (!P.is_vector) {
+            x += duhamel(GiNaC::diff(step, GiNaC::ex_to<GiNaC::symbol>(P.t)), c, P.t);
+            continue;
+        }
+        // by functions of t times constant vectors (a literal axis leaves t inside a literal)
+        const auto terms = terms_in_time(diff_t(step, P.t), P.t);
+        if (!terms) throw algebra_error("internal: the impulse response of " + P.name + " is not read by terms in t");
+        for (const auto& [g, Vj] : *terms) x += duhamel(g, c, P.t) * Vj;
+    }
+    return x;
+}
 
 ex vector_solution(const cauchy_problem& P, const operator_form& F, const operator_solution& S) {
     std::map<std::string, ex> data(F.data.begin(), F.data.end());
@@ -94,7 +126,8 @@ ex solve_unwitnessed(const cauchy_problem& P) {
                                 "\nhas no closed form in t (reduced_solution.h evaluates it)");
     const operator_form F = P.reduced ? *P.reduced : reduce(P);
     const rotation_operator_algebra R(F.Omega);
-    const ex x = vector_solution(P, F, solve(F.ode, R, P.t));
+    ex x = vector_solution(P, F, solve(F.ode, R, P.t));
+    if (!F.general.empty()) x += general_response(P, F);
     // derived exactly from the rationals the floats denote (reduce), rounded once here
     return problem_has_float(P) ? GiNaC::evalf(x) : x;
 }

@@ -145,8 +145,8 @@ ex inner_variable(const ex& c, const ex& t) {
     return inner.empty() ? c : c.subs(inner, GiNaC::subs_options::no_pattern);
 }
 
-// int_0^t G(t - tau) c(tau) dtau: closed form by convolution when c is a quasi-polynomial,
-// else the integral object (its constant factors outside).
+}  // namespace
+
 ex duhamel(const ex& G, const ex& c, const ex& t) {
     try {
         return convolution(quasi_polynomial::from_ex(c, t), quasi_polynomial::from_ex(G, t)).to_ex();
@@ -154,7 +154,9 @@ ex duhamel(const ex& G, const ex& c, const ex& t) {
         // sum_i k_i(t) int_0^t f_i(tau) dtau: what does not depend on tau (t too) outside, the
         // terms grouped by their part in tau (G(t - tau) = sin(w0 t) cos(w0 tau) - ... splits)
         const ex& tau = integration_variable();
-        const ex e = GiNaC::expand(separate_argument(G.subs(t == t - tau), tau) * inner_variable(c, t).subs(t == tau));
+        // (cos(w (t - tau)) = cos(w t) cos(-w tau) - ...: the signs out, cos(w tau), -sin(w tau))
+        const ex e = GiNaC::expand(
+            normalize_trig_signs(separate_argument(G.subs(t == t - tau), tau) * inner_variable(c, t).subs(t == tau)));
         std::vector<std::pair<ex, ex>> parts;  // f_i(tau), k_i
         for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
             const auto [k, f] = split_constant(GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e, tau);
@@ -167,8 +169,6 @@ ex duhamel(const ex& G, const ex& c, const ex& t) {
         return out;
     }
 }
-
-}  // namespace
 
 // (Thm VI.2.1.1, VI.2.9-12) r = Q psi, Q the rotation by -a(t) about n = u/|u|.
 ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F) {
@@ -184,6 +184,7 @@ ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F) {
                                     " is not a sum of functions of " + to_string(P.t) + " times constant vectors");
         const ex G = impulse_response(P, F), U = norm(F.u);
         for (const auto& [q, W] : *groups) {
+            num::require_finite_on_half_line(q, P.t, "the free term " + to_string(-q * W));  // as on the right
             const ex C = duhamel(G, q * GiNaC::cos(F.angle), P.t);
             const ex S = duhamel(G, q * GiNaC::sin(F.angle), P.t);
             psi -= C * canonical(W) + S / U * canonical(cross(F.u, W));

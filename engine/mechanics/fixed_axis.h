@@ -70,6 +70,13 @@ const GiNaC::ex& integration_variable();
 /// domain_error for deeper nesting.
 GiNaC::ex integral_in_t(const GiNaC::ex& v, const GiNaC::ex& t);
 
+/// (Duhamel, VI.1.25-38) int_0^t G(t - tau) c(tau) dtau of scalar functions G, c of t: in closed
+/// form by convolution when both are quasi-polynomials; otherwise G(t - tau) separated by the
+/// addition theorems and the result a sum k_i(t) int_0^t f_i(tau) dtau of integral objects in
+/// tau (integration_variable()), the factors free of tau outside (c's own integral objects
+/// int_0^t g become int_0^tau g(sigma) dsigma). The caller has made sure c is finite on [0, t].
+GiNaC::ex duhamel(const GiNaC::ex& G, const GiNaC::ex& c, const GiNaC::ex& t);
+
 /// r(t) = Q psi(t), coordinate-free. Errors as solve(cauchy_problem).
 GiNaC::ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F);
 

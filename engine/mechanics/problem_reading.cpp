@@ -14,6 +14,7 @@
 
 #include "scalar/scalar.h"
 #include "core/error.h"
+#include "numeric/quadrature.h"
 #include "numeric/reference.h"
 #include "vector/vector.h"
 
@@ -278,6 +279,7 @@ std::optional<operator_form> reduce_named_literals(const cauchy_problem& P) {
     operator_form out = reduce(Q);
     out.axis = out.axis.subs(back, GiNaC::subs_options::no_pattern);
     for (auto& d : out.data) d.second = d.second.subs(back, GiNaC::subs_options::no_pattern);
+    for (auto& g : out.general) g.second = g.second.subs(back, GiNaC::subs_options::no_pattern);
     for (auto& Am : out.ode.A)
         for (ex& a : Am) a = a.subs(back, GiNaC::subs_options::no_pattern);
     put_numeric_norm(out, P.t);
@@ -343,11 +345,35 @@ void put_norm(operator_form& out, std::vector<operator_polynomial>& A, const std
 void read_forcing(const cauchy_problem& P, const ex& f, operator_form& out) {
     const ex F = -f;
     const ex w2 = out.axis.is_zero() ? ex(0) : dot(out.axis, out.axis);
-    auto add_forcing = [&](const ex& c, const ex& v) {
+    auto add_quasi_polynomial = [&](const ex& c, const ex& v) {
         const ex cc = out.axis.is_zero() ? c : c.subs(w2 == GiNaC::pow(out.Omega, 2));
         const std::string nm = "F" + std::to_string(out.ode.forcing.size());
         out.ode.forcing.push_back({forcing_coefficient(cc, P.t, v), 0, nm});
         out.data.emplace_back(nm, v);
+    };
+    // (VI.1.26-38 for every f) a coefficient that is not a quasi-polynomial: its quasi-polynomial
+    // terms as before, the rest kept for its Duhamel integral (cauchy_solve.cpp), when finite
+    // for every t >= 0
+    auto add_forcing = [&](const ex& c, const ex& v) {
+        try {
+            add_quasi_polynomial(c, v);
+            return;
+        } catch (const domain_error&) {
+        }
+        const ex e = GiNaC::expand(c);
+        ex rest = 0;
+        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
+            const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
+            try {
+                quasi_polynomial::from_ex(term, P.t);
+                add_quasi_polynomial(term, v);
+            } catch (const domain_error&) {
+                rest += term;
+            }
+        }
+        const ex g = GiNaC::normal(rest);
+        num::require_finite_on_half_line(g, P.t, "the free term " + (v.is_equal(1) ? text(g) : to_string(g * v)));
+        out.general.emplace_back(g, v);
     };
     if (!P.is_vector) {
         if (!F.is_zero()) add_forcing(GiNaC::expand(F), 1);
@@ -437,7 +463,8 @@ frame_reading read_frame(const cauchy_problem& P) {
 // (VI.2.50-52) A second-order vector problem in which x itself is absent (a charge in B(t)):
 // the first-order problem for v = x', when a rotating-frame reading takes it; then
 // x = x(0) + int_0^t v. Nothing otherwise.
-std::shared_ptr<const cauchy_problem> velocity_problem(const cauchy_problem& P) {
+// `why` receives the reading's reason when it has one (a free term singular at some t >= 0).
+std::shared_ptr<const cauchy_problem> velocity_problem(const cauchy_problem& P, std::string& why) {
     if (!P.is_vector || P.order() != 2 || P.expression.has(P.unknowns[0])) return nullptr;
     auto V = std::make_shared<cauchy_problem>(P);
     V->name = P.name + "'";
@@ -446,7 +473,10 @@ std::shared_ptr<const cauchy_problem> velocity_problem(const cauchy_problem& P) 
     frame_reading r = read_frame(*V);
     if (r.fixed_axis) V->fixed_axis = std::make_shared<const fixed_axis_form>(std::move(*r.fixed_axis));
     else if (r.turning) V->turning = std::make_shared<const turning_frame_form>(std::move(*r.turning));
-    else return nullptr;
+    else {
+        why = !r.why_fixed_axis.empty() ? r.why_fixed_axis : r.why_turning;
+        return nullptr;
+    }
     return V;
 }
 
@@ -460,10 +490,13 @@ void read_problem(cauchy_problem& P) {
         // a turning w(t) or a central field (VI.3): r = F_(-w)(psi), evaluated numerically
         frame_reading r = read_frame(P);
         std::shared_ptr<const cauchy_problem> V;
-        if (!r.fixed_axis && !r.turning) V = velocity_problem(P);
+        std::string why_velocity;
+        if (!r.fixed_axis && !r.turning) V = velocity_problem(P, why_velocity);
         if (r.fixed_axis) P.fixed_axis = std::make_shared<const fixed_axis_form>(std::move(*r.fixed_axis));
         else if (r.turning) P.turning = std::make_shared<const turning_frame_form>(std::move(*r.turning));
         else if (V) P.velocity = V;
+        // the velocity reading's reason first when it reads the free term (x itself absent)
+        else if (why_velocity.find("the free term") != std::string::npos) throw domain_error(why_velocity);
         else if (!r.why_fixed_axis.empty()) throw domain_error(r.why_fixed_axis);  // a fixed axis, in another form
         else if (!r.why_turning.empty()) throw domain_error(r.why_turning);
         else throw;

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "numeric/evaluator.h"
+#include "numeric/integrate.h"
 #include "numeric/reference.h"
 #include "vector/vector.h"
 
@@ -61,6 +62,63 @@ std::function<double(double)> scalar_of(const ex& e, const ex& x) {
         f->eval(&v, &out);
         return out;
     };
+}
+
+// (Thm VI.3.2.1 with a free term F(t)) the part of psi that F drives, psi_F = -int_0^t G(t - tau)
+// Q^T(tau) F(tau)/m dtau: psi_F'' + k psi_F = -Q^T F/m (order 1: psi_F' + k psi_F = -Q^T F/m),
+// psi_F = psi_F' = 0 at t = 0, integrated with Q^T ((Q^T)' = Q^T W, Q^T(0) = I: Q' = -W Q)
+// by Boost.Odeint (rkf78, 1e-13); r gets Q psi_F and r' gets Q psi_F' - w x (Q psi_F).
+void add_forced_part(const reduced_solution& s, const value_map& put, const rotating_frame_problem& R,
+                     const std::vector<double>& times, std::vector<rotating_frame_state>& out) {
+    const cauchy_problem& P = *s.problem;
+    const turning_frame_form& F = s.form();
+    const ex& t = P.t;
+    const num::angular_velocity force = vector_of_t(put(F.terms.free), t, "the free term F(t)");
+    const double m = number(put(F.terms.m), "the coefficient m");
+    const double k = number(put(P.order() == 1 ? F.k : GiNaC::normal(F.terms.g / F.terms.m)), "the constant k");
+    const std::size_t M = P.order();
+    const num::rhs_function rhs = [&](double x, const double* y, double* dy) {
+        Eigen::Matrix3d Qt;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) Qt(i, j) = y[3 * i + j];
+        const Eigen::Vector3d w = R.w(x), psi(y[9], y[10], y[11]);
+        Eigen::Matrix3d W;
+        W << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+        const Eigen::Matrix3d dQt = Qt * W;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) dy[3 * i + j] = dQt(i, j);
+        const Eigen::Vector3d a = -k * psi - Qt * force(x) / m;
+        for (int i = 0; i < 3; ++i) {
+            if (M == 1) {
+                dy[9 + i] = a[i];
+            } else {
+                dy[9 + i] = y[12 + i];
+                dy[12 + i] = a[i];
+            }
+        }
+    };
+    std::vector<double> y0(M == 1 ? 12 : 15, 0.0);
+    y0[0] = y0[4] = y0[8] = 1;
+    std::vector<double> distinct;
+    for (const double x : times)
+        if (distinct.empty() || x > distinct.back()) distinct.push_back(x);
+    num::integration_options o;
+    o.abs_tol = o.rel_tol = 1e-13;
+    const num::integration_result res = num::integrate(rhs, 0.0, y0, distinct, o);
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        while (distinct[j] < times[i]) ++j;
+        const Eigen::VectorXd y = res.state(j);
+        Eigen::Matrix3d Qt;
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) Qt(a, b) = y[3 * a + b];
+        const Eigen::Vector3d psi(y[9], y[10], y[11]);
+        const Eigen::Vector3d dpsi = M == 1 ? Eigen::Vector3d(-k * psi - Qt * force(times[i]) / m)
+                                            : Eigen::Vector3d(y[12], y[13], y[14]);
+        const Eigen::Vector3d r = Qt.transpose() * psi;
+        out[i].r += r;
+        out[i].v += Qt.transpose() * dpsi - R.w(times[i]).cross(r);
+    }
 }
 
 }  // namespace
@@ -138,7 +196,11 @@ std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const valu
     // instead of running for hours
     num::rotation_tensor_options o;
     o.max_steps = 5'000'000;
-    if (P.order() == 2) return solve_by_reduction(R, times, o);
+    if (P.order() == 2) {
+        std::vector<rotating_frame_state> out = solve_by_reduction(R, times, o);
+        if (!s.form().terms.free.is_zero()) add_forced_part(s, put, R, times, out);
+        return out;
+    }
     // order 1: x = Q psi, psi = exp(-k t) x0, x' = Q psi' - w x x
     const double k = number(put(s.form().k), "the constant k");
     std::vector<Eigen::Matrix3d> Q;
@@ -155,6 +217,7 @@ std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const valu
         const Eigen::Vector3d x = Q[i] * psi;
         out.push_back({x, Q[i] * (-k * psi) - R.w(times[i]).cross(x)});
     }
+    if (!s.form().terms.free.is_zero()) add_forced_part(s, put, R, times, out);
     return out;
 }
 

@@ -6,7 +6,9 @@
 // The object keeps the problem (with its turning_frame_form) and the values bound
 // by solve(P, values); evaluate() puts in every value and returns r and r' at the
 // requested times, each to about 1e-13 relative (the Magnus tolerance and Kepler's
-// equation solved to the last digit; a general f by Boost.Odeint at 1e-13).
+// equation solved to the last digit; a general f by Boost.Odeint at 1e-13). A free term F(t)
+// (Thm VI.3.2.1 with a force, constant k): psi's part -int_0^t G(t - tau) Q^T F/m dtau
+// integrated with Q^T by Boost.Odeint at 1e-13 (add_forced_part in the .cpp).
 #pragma once
 
 #include <functional>

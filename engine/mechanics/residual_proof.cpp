@@ -334,6 +334,7 @@ proof prove(const cauchy_problem& P, const ex& s) {
     if (!P.is_vector || P.fixed_axis || P.turning || P.velocity) return {};
     try {
         const operator_form F = P.reduced ? *P.reduced : reduce(P);
+        if (!F.general.empty()) return {};  // Duhamel integral objects: integral_residual_zero
         std::map<ex, triple, GiNaC::ex_is_less> G;
         if (!coefficients(P, F, s, G)) return {};
         const ex W2 = GiNaC::pow(F.Omega, 2);

@@ -31,6 +31,7 @@ struct proof {
 };
 
 /// The proof in the algebra of K of s for P (see above). Nothing proved (both false) for a
+/// free term kept as a Duhamel integral (operator_form::general), for a
 /// scalar problem, a fixed-axis, turning-frame or velocity reading, or an s not read so.
 proof prove(const cauchy_problem& P, const GiNaC::ex& s);
 

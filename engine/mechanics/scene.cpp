@@ -145,6 +145,11 @@ placeholder_factors scene_model::factors() const {
 scene_model classify(const cauchy_problem& P, const parameter_values& v) {
     check_value_names(P, v);
     const operator_form F = P.reduced ? *P.reduced : reduce(P);
+    if (!F.general.empty())
+        throw domain_error("the free term " + to_string(F.general.front().first * F.general.front().second) +
+                           " is not a quasi-polynomial in " + to_string(P.t) +
+                           ": the scene's cases are read on quasi-polynomial forcing (solve(P, values) gives its "
+                           "Duhamel integral)");
     scene_model out;
     out.axis = F.axis;
     out.form = F;
@@ -462,7 +467,10 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
     if (!P.reduced && P.turning && !closed_turning)
         throw closed_form_error("the solution " + describe_reduction(P, *P.turning) +
                                 "\nhas no closed form in t (reduced_solution.h evaluates it)");
-    if (!P.reduced && (P.fixed_axis || closed_turning || P.velocity)) {
+    // a free term kept as a Duhamel integral (operator_form::general, VI.1.26-38): the general
+    // solution with the values put in, as for the readings below
+    const bool duhamel_terms = P.reduced && !P.reduced->general.empty();
+    if ((!P.reduced && (P.fixed_axis || closed_turning || P.velocity)) || duhamel_terms) {
         // a frame rotating about a fixed axis (VI.2) or precessing regularly (VI.3): the general reduction with the values
         // put in (floats as the exact numbers they are, the result evaluated once at the end)
         check_value_names(P, v);
@@ -497,6 +505,12 @@ scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
             out.model.reduction = "method: the velocity " + P.velocity->name + " by reduction to the inertial problem "
                                   "(Thm VI.2.1.1), then " + P.name + " = " + P.name + "(0) + int_0^t " +
                                   P.velocity->name + " (VI.2.51)\n";
+            return out;
+        }
+        if (duhamel_terms) {
+            out.model.reduction = "method: the operator solution in the algebra of K (VI.1.26-38), the free terms "
+                                  "that are not quasi-polynomials as Duhamel integrals int_0^t Y(t - tau) f(tau) "
+                                  "dtau\n";
             return out;
         }
         const fixed_axis_form& fa = *P.fixed_axis;

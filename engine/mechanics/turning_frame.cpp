@@ -1,6 +1,8 @@
 // symrep/mechanics/turning_frame.cpp -- the reading of rotating-frame problems
 // and their reduction to the inertial problem (turning_frame.h; thesis VI.2-VI.3).
 #include "mechanics/turning_frame.h"
+
+#include "numeric/quadrature.h"
 #include "mechanics/fixed_axis.h"
 
 #include <algorithm>
@@ -375,11 +377,23 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
         if (why && reasons) *why = reason;
         return std::nullopt;
     };
-    if (!T->free.is_zero())
-        return refuse(T->form + "it has the free term " + to_string(T->free) +
-                      ": in a frame whose axis turns, or with a central field, the inertial problem would have the "
-                      "rotated force Q^T F(t) (Thm VI.3.2.1 is stated without one)");
     const ex& t = P.t;
+    if (!T->free.is_zero()) {
+        // (Thm VI.3.2.1 with a free term) psi'' + k psi = -Q^T F(t)/m: linear in psi only, where the
+        // rotated force enters by Duhamel's integral (reduced_solution.cpp); a nonlinear field
+        // would couple psi to Q
+        if (T->g.has(T->p))
+            return refuse(T->form + "it has the free term " + to_string(T->free) +
+                          " beside a nonlinear central field: the inertial problem would couple psi to Q through "
+                          "the rotated force Q^T F(t) (Thm VI.3.2.1 is reduced with a free term for a constant k "
+                          "only)");
+        const auto terms = terms_in_time(T->free, t);
+        if (!terms)
+            return refuse(T->form + "its free term " + to_string(T->free) + " is not a sum of functions of " +
+                          to_string(t) + " times constant vectors");
+        for (const auto& [q, V] : *terms)
+            num::require_finite_on_half_line(q, t, "the free term " + to_string(-q * V));  // as on the right
+    }
     turning_frame_form F;
     F.terms = *T;
     F.w0 = T->w.subs(t == 0);
@@ -405,7 +419,7 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
         I->expression = T->m * P.unknowns[1] + T->g * x;
         I->turning.reset();
         I->reduced = std::make_shared<const operator_form>(reduce(*I));
-        F.psi = solve(*I);
+        (T->free.is_zero() ? F.psi : F.psi_unforced) = solve(*I);
         return F;
     }
     F.f = GiNaC::normal(T->p * T->g / T->m);
@@ -417,7 +431,7 @@ std::optional<turning_frame_form> read_turning_frame(const cauchy_problem& P, st
         I->turning.reset();
         I->initial = {P.initial[0], F.psi_initial_velocity};
         I->reduced = std::make_shared<const operator_form>(reduce(*I));
-        F.psi = solve(*I);
+        (T->free.is_zero() ? F.psi : F.psi_unforced) = solve(*I);
     }
     return F;
 }
@@ -438,9 +452,19 @@ std::string describe_reduction(const cauchy_problem& P, const turning_frame_form
     else
         s += "  Q x = cos(a) x - sin(a)/|u| u x x + (1 - cos(a))/|u|^2 (u . x) u, u = " + to_string(*F.u) +
              ", a(t) = " + to_string(*F.angle) + "   (VI.2.12, w(t) = " + W + ")\n";
+    // (Thm VI.3.2.1 with a free term F(t)) the rotated force on the right, its Duhamel integral
+    const bool forced = !F.terms.free.is_zero();
+    // f(t) = -F(t)/m, the force per unit mass on the right side
+    const std::string right =
+        forced ? "Q^T f(t), f(t) = " + to_string(canonical(-F.terms.free / F.terms.m)) : std::string("0");
+    auto forced_psi = [&](const std::string& G) {
+        return "  psi = " + to_string(*F.psi_unforced) + " + int_0^t " + G + "Q^T(tau) f(tau) dtau   (Duhamel; "
+               "numeric: Q^T with psi by Boost.Odeint)";
+    };
     if (P.order() == 1) {
-        s += "  psi'" + (F.k.is_zero() ? std::string() : " + (" + to_string(F.k) + ") psi") + " = 0, psi(0) = " +
-             to_string(P.initial[0]) + "\n";
+        s += "  psi'" + (F.k.is_zero() ? std::string() : " + (" + to_string(F.k) + ") psi") + " = " + right +
+             ", psi(0) = " + to_string(P.initial[0]) + "\n";
+        if (forced) return s + forced_psi(F.k.is_zero() ? "" : "exp(-(" + to_string(F.k) + ") (t - tau)) ");
         s += "  psi = " + to_string(*F.psi);
         return s;
     }
@@ -448,9 +472,10 @@ std::string describe_reduction(const cauchy_problem& P, const turning_frame_form
     const ex f = F.f.subs(F.terms.p == q), lin = GiNaC::normal(F.terms.g / F.terms.m);
     s += "  psi''" + (f.is_zero() ? std::string() : F.terms.g.has(F.terms.p) ? " + (" + to_string(f) + ") psi/|psi|"
                                                                             : " + (" + to_string(lin) + ") psi") +
-         " = 0, psi(0) = " +
+         " = " + right + ", psi(0) = " +
          to_string(P.initial[0]) + ", psi'(0) = " + to_string(F.psi_initial_velocity) + "   (VI.3.133)\n";
-    if (F.psi) s += "  psi = " + to_string(*F.psi);
+    if (forced) s += forced_psi("G(t - tau) ") + ",\n  G the impulse response of psi'' + (" + to_string(lin) + ") psi";
+    else if (F.psi) s += "  psi = " + to_string(*F.psi);
     else if (GiNaC::normal(F.f * GiNaC::pow(F.terms.p, 2)).has(F.terms.p))
         s += "  psi: the inertial orbit in the central field, numeric (Boost.Odeint)";
     else

@@ -10,7 +10,11 @@
 // read_frame_terms() reads m, w (the cross terms on r' over 2 m) and what is
 // left beside the rotating-frame operator; read_turning_frame() accepts it
 // when that rest is a central field g(|r|) r (a constant k, k r/|r|^3 for
-// Kepler, any g given as an expression in |r|) and there is no free term.
+// Kepler, any g given as an expression in |r|), and a free term F(t) only with
+// a constant k (a sum of functions of t times constant vectors, each finite for
+// t >= 0): then psi'' + k/m psi = -Q^T F(t)/m (Thm VI.3.2.1 with a force; order 1
+// likewise), psi = psi_unforced - int_0^t G(t - tau) Q^T(tau) F(tau)/m dtau,
+// evaluated with Q^T by Boost.Odeint (reduced_solution.h).
 // By Thm VI.3.2.1 the solution is
 //     r = F_{-w}(psi) = Q psi,  Q' = -W Q, Q(0) = I  (W x = w x x, VI.3.117),
 // psi the inertial solution of psi'' + f(|psi|) psi/|psi| = 0 with
@@ -86,6 +90,9 @@ struct turning_frame_form {
     GiNaC::ex w0;         ///< w(0)
     GiNaC::ex psi_initial_velocity;  ///< v0 + w(0) x r0 (order 2)
     std::optional<GiNaC::ex> psi;        ///< the inertial solution in closed form (f = 0 or f = c p; order 1), else empty
+    /// With a free term F(t) (terms.free, constant k only): psi without it, in closed form; psi is then
+    /// psi_unforced - int_0^t G(t - tau) Q^T(tau) F(tau)/m dtau (Thm VI.3.2.1 with a force), numeric.
+    std::optional<GiNaC::ex> psi_unforced;
     /// A fixed direction, w = s(t) u: the unit-free direction u and a(t) = |u| int_0^t s (nothing: turning; angle nothing when int s is not elementary).
     std::optional<GiNaC::ex> u, angle;
     /// A regular precession, w(t) = c u1 + R_u1(-c t) v (a constant spin v carried round a

@@ -223,4 +223,116 @@ double integrate_nested(const ex& variable, double a, double b, const ex& integr
     return judged(variable, a, b, integrand);
 }
 
+namespace {
+
+// Distinct real zeros of the polynomial p (rational coefficients, p(0) != 0) in (0, inf):
+// Sturm's chain p, p', -rem(...), its sign changes at 0 less those at +inf.
+int zeros_on_positive_axis(const ex& p, const GiNaC::symbol& x) {
+    std::vector<ex> chain{GiNaC::expand(p), GiNaC::expand(p.diff(x))};
+    while (!chain.back().is_zero() && chain.back().degree(x) > 0) {
+        const ex r = GiNaC::expand(-GiNaC::rem(chain[chain.size() - 2], chain.back(), x));
+        if (r.is_zero()) break;
+        chain.push_back(r);
+    }
+    auto changes = [](const std::vector<GiNaC::numeric>& v) {
+        int n = 0, last = 0;
+        for (const auto& a : v) {
+            const int s = a.is_zero() ? 0 : a.is_positive() ? 1 : -1;
+            if (s == 0) continue;
+            if (last != 0 && s != last) ++n;
+            last = s;
+        }
+        return n;
+    };
+    std::vector<GiNaC::numeric> at0, atinf;
+    for (const ex& q : chain) {
+        at0.push_back(GiNaC::ex_to<GiNaC::numeric>(q.subs(x == 0)));
+        atinf.push_back(GiNaC::ex_to<GiNaC::numeric>(q.lcoeff(x)));
+    }
+    return changes(at0) - changes(atinf);
+}
+
+// A polynomial in x with rational coefficients.
+bool rational_polynomial(const ex& p, const GiNaC::symbol& x) {
+    if (!p.is_polynomial(x)) return false;
+    const ex e = GiNaC::expand(p);
+    for (int k = e.ldegree(x); k <= e.degree(x); ++k) {
+        const ex c = e.coeff(x, k);
+        if (!GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) return false;
+    }
+    return true;
+}
+
+struct half_line_check {
+    const GiNaC::symbol& x;
+    const std::string& what;
+
+    [[noreturn]] void undecided(const ex& f) const {
+        throw domain_error(what + ": cannot decide that " + message_text(f) + " is finite for every " +
+                           message_text(x) + " >= 0 (an integral object int_0^" + message_text(x) +
+                           " needs it; refused rather than integrated)");
+    }
+    [[noreturn]] void singular(const ex& f, const ex& p) const {
+        throw domain_error(what + ": " + message_text(f) + " is not finite at a zero of " + message_text(p) + " in " +
+                           message_text(x) + " >= 0: int_0^" + message_text(x) +
+                           " over it is singular (refused, not integrated)");
+    }
+    // p has no zero in [0, inf) (strict: also not at 0), or p >= 0 there with a zero at 0 allowed
+    void require_sign(const ex& f, const ex& p0, bool zero_at_origin_allowed) const {
+        if (!p0.has(x)) return;
+        if (!rational_polynomial(p0, x)) undecided(f);
+        ex p = GiNaC::expand(p0);
+        const int low = p.ldegree(x);
+        if (low > 0) {
+            if (!zero_at_origin_allowed) singular(f, p0);
+            p = GiNaC::expand(GiNaC::quo(p, GiNaC::pow(x, low), x));
+        }
+        const GiNaC::numeric p_at_0 = GiNaC::ex_to<GiNaC::numeric>(p.subs(x == 0));
+        if (zeros_on_positive_axis(p, x) > 0) singular(f, p0);
+        if (zero_at_origin_allowed && !p_at_0.is_positive()) singular(f, p0);
+    }
+    void operator()(const ex& f) const {
+        if (!f.has(x) || f.is_equal(x)) return;
+        if (GiNaC::is_a<GiNaC::add>(f) || GiNaC::is_a<GiNaC::mul>(f)) {
+            for (std::size_t i = 0; i < f.nops(); ++i) (*this)(f.op(i));
+            return;
+        }
+        if (GiNaC::is_a<GiNaC::power>(f)) {
+            const ex b = f.op(0), e = f.op(1);
+            if (e.has(x)) {  // c^g(x) = exp(g log c): a positive number c
+                if (b.has(x) || !GiNaC::is_a<GiNaC::numeric>(b) || !GiNaC::ex_to<GiNaC::numeric>(b).is_positive())
+                    undecided(f);
+                (*this)(e);
+                return;
+            }
+            (*this)(b);
+            if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real()) undecided(f);
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (n.is_pos_integer()) return;
+            require_sign(f, b, n.is_positive());
+            return;
+        }
+        using namespace GiNaC;
+        if (is_ex_the_function(f, exp) || is_ex_the_function(f, sin) || is_ex_the_function(f, cos) ||
+            is_ex_the_function(f, sinh) || is_ex_the_function(f, cosh) || is_ex_the_function(f, tanh) ||
+            is_ex_the_function(f, atan) || is_ex_the_function(f, abs)) {
+            (*this)(f.op(0));
+            return;
+        }
+        if (is_ex_the_function(f, log)) {
+            (*this)(f.op(0));
+            require_sign(f, f.op(0), false);
+            return;
+        }
+        undecided(f);
+    }
+};
+
+}  // namespace
+
+void require_finite_on_half_line(const ex& f, const ex& x, const std::string& what) {
+    if (!GiNaC::is_a<GiNaC::symbol>(x)) throw type_error("require_finite_on_half_line: the variable is not a symbol");
+    half_line_check{GiNaC::ex_to<GiNaC::symbol>(x), what}(f);
+}
+
 }  // namespace symrep::num

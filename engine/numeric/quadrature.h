@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include <ginac/ginac.h>
 
@@ -56,5 +57,15 @@ double integrate_nested(const GiNaC::ex& variable, double a, double b, const GiN
 /// e with every integral object whose limits are numbers and whose integrand has no symbol
 /// but its variable (and nested integral objects of the form above) replaced by its value.
 GiNaC::ex integrals_as_numbers(const GiNaC::ex& e);
+
+/// The precondition of an integral object int_0^t K(t - tau) f(tau) dtau kept for every t >= 0
+/// (the Duhamel integrals of VI.1.26-38, VI.2, VI.3): f finite and continuous at every x >= 0,
+/// decided exactly. f is built from numbers, symbols free of x, x, sums, products, natural
+/// powers and exp, sin, cos, sinh, cosh, tanh, atan, abs; another power (1/p, sqrt(p)) or log(p)
+/// only of a polynomial p in x with rational coefficients that Sturm's theorem shows without a
+/// zero in [0, inf) (a positive exponent: p >= 0 there, a zero at x = 0 allowed), or of a
+/// p free of x. Otherwise domain_error naming `what` and the factor: "is not finite at x = ..."
+/// (a pole or a logarithm's zero at some x >= 0), or "cannot decide that ... is finite".
+void require_finite_on_half_line(const GiNaC::ex& f, const GiNaC::ex& x, const std::string& what);
 
 }  // namespace symrep::num

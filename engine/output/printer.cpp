@@ -447,7 +447,11 @@ const bool message_printer_registered = (set_message_printer(&print_ex), true);
 }  // namespace
 
 std::string print_ex(const ex& e) {
-    if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e))) return symrep::to_string(e);
+    // integral objects (a scalar Duhamel integral of mechanics/, int_0^t f dtau): the vector printer's notation
+    const bool integral = std::any_of(e.preorder_begin(), e.preorder_end(),
+                                      [](const ex& x) { return is_a<GiNaC::integral>(x); });
+    if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e) || integral))
+        return symrep::to_string(e);
     if (is_a<GiNaC::relational>(e) && (involves_vectors(e.op(0)) || involves_vectors(e.op(1))))
         return print_ex(e.op(0)) + " = " + print_ex(e.op(1));
     return pr(e).text;
