@@ -635,6 +635,18 @@ GiNaC::ex atan2_exact(const GiNaC::ex& y, const GiNaC::ex& x) {
             radius < GiNaC::numeric(1, 1000000000))
             continue;
         if (is_zero_scalar(GiNaC::expand(x * GiNaC::sin(u) - y * GiNaC::cos(u)))) return u;
+        // y cos(u) = x sin(u) through their squares (sin(u)^2 = 1 - cos(u)^2) and their signs, both
+        // clear of 0 at 40 digits: y = sqrt(1 - cos(2)^2) meets sin(2)
+        GiNaC::numeric a, b;
+        const GiNaC::ex ya = y * GiNaC::cos(u), xb = x * GiNaC::sin(u);
+        if (!evaluate_numeric(ya, 40, a) || !evaluate_numeric(xb, 40, b) || !a.is_real() || !b.is_real() ||
+            GiNaC::abs(a) < GiNaC::numeric(1, 1000000000) || (a > 0) != (b > 0))
+            continue;
+        const GiNaC::wildcard w(0);
+        if (is_zero_scalar(GiNaC::expand(ya * ya - xb * xb)
+                               .subs(GiNaC::pow(GiNaC::sin(w), 2) == 1 - GiNaC::pow(GiNaC::cos(w), 2),
+                                     GiNaC::subs_options::algebraic)))
+            return u;
     }
     return fallback;
 }

@@ -126,6 +126,15 @@ std::pair<GiNaC::ex, GiNaC::ex> monomial_and_coefficient(const GiNaC::ex& term) 
     return {term, 1};
 }
 
+/// Real: GiNaC says so, or a constant whose value is a real number (sqrt(2)/3, which GiNaC's
+/// info flags do not call real).
+bool is_real_argument(const GiNaC::ex& z) {
+    if (z.info(GiNaC::info_flags::real)) return true;
+    if (has_symbol(z)) return false;
+    const GiNaC::ex v = GiNaC::evalf(z);
+    return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+}
+
 bool is_trig_or_exponential(const GiNaC::ex& y) {
     return GiNaC::is_a<GiNaC::function>(y) && y.nops() == 1 &&
            (GiNaC::is_the_function<GiNaC::sin_SERIAL>(y) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(y) ||
@@ -157,6 +166,13 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                 }
             }
         }
+        // e^(i pi/L) in radicals, sin(pi/L) = sqrt(1 - cos(pi/L)^2) (L > 1); 0 where GiNaC does not know
+        // cos(pi/L) in radicals
+        static GiNaC::ex unit_root(const GiNaC::numeric& L) {
+            const GiNaC::ex cs = GiNaC::cos(GiNaC::Pi / L);
+            if (cs.has(GiNaC::cos(GiNaC::wild()))) return 0;
+            return cs + GiNaC::I * GiNaC::sqrt(GiNaC::expand(1 - cs * cs));
+        }
         GiNaC::numeric denominator_of(const GiNaC::ex& m) const {
             const auto it = L.find(m);
             return it == L.end() ? GiNaC::numeric(1) : it->second;
@@ -176,7 +192,27 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                 if (term.is_equal(GiNaC::Pi) && k.is_equal(GiNaC::I)) {
                     // e^(i c pi) is an algebraic number: exact where GiNaC knows cos and sin of c pi
                     // (c with denominator 1, 2, 3, 4, 6, ...), so that sin(pi - x) meets sin(x)
-                    const GiNaC::ex z = GiNaC::cos(c * GiNaC::Pi) + GiNaC::I * GiNaC::sin(c * GiNaC::Pi);
+                    // one base e^(i pi/L) for all the multiples of pi where GiNaC knows cos(pi/L): the
+                    // phases k pi/5 and 2 pi/5 then meet as powers of one algebraic number
+                    if (GiNaC::is_a<GiNaC::numeric>(c) && (c * Lm).info(GiNaC::info_flags::integer) && Lm > 1) {
+                        const GiNaC::ex base = unit_root(Lm);
+                        if (!base.is_zero()) {
+                            E *= GiNaC::pow(base, c * Lm);
+                            continue;
+                        }
+                    }
+                    const GiNaC::ex cs = GiNaC::cos(c * GiNaC::Pi);
+                    GiNaC::ex sn = GiNaC::sin(c * GiNaC::Pi);
+                    if (!cs.has(GiNaC::cos(GiNaC::wild())) && sn.has(GiNaC::sin(GiNaC::wild())) &&
+                        GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) {
+                        // GiNaC knows cos(pi/5), not sin(pi/5): sin(c pi) = +-sqrt(1 - cos(c pi)^2), the
+                        // sign that of sin on (0, pi) or (pi, 2 pi) by c mod 2 (c not an integer here)
+                        const GiNaC::numeric cn = GiNaC::ex_to<GiNaC::numeric>(c);
+                        const GiNaC::numeric r = cn - 2 * GiNaC::iquo(cn.numer(), 2 * cn.denom());
+                        const bool positive = (r > 0 && r < 1) || (r > -2 && r < -1);
+                        sn = (positive ? 1 : -1) * GiNaC::sqrt(GiNaC::expand(1 - cs * cs));
+                    }
+                    const GiNaC::ex z = cs + GiNaC::I * sn;
                     if (!z.has(GiNaC::cos(GiNaC::wild())) && !z.has(GiNaC::sin(GiNaC::wild()))) {
                         E *= z;
                         continue;
@@ -186,13 +222,13 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                     GiNaC::ex_to<GiNaC::numeric>(c).is_integer() && Lm == 1) {
                     // e^(i atan z) = (1 + i z)/sqrt(1 + z^2) and e^(i atan2(y, x)) = (x + i y)/sqrt(x^2 + y^2)
                     // for real z, x, y: cos(pi - atan(2)) meets -1/sqrt(5)
-                    if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(term) && term.op(0).info(GiNaC::info_flags::real)) {
+                    if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(term) && is_real_argument(term.op(0))) {
                         const GiNaC::ex z = term.op(0);
                         E *= GiNaC::pow((1 + GiNaC::I * z) / GiNaC::sqrt(GiNaC::expand(1 + z * z)), c);
                         continue;
                     }
-                    if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(term) && term.op(0).info(GiNaC::info_flags::real) &&
-                        term.op(1).info(GiNaC::info_flags::real)) {
+                    if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(term) && is_real_argument(term.op(0)) &&
+                        is_real_argument(term.op(1))) {
                         const GiNaC::ex y = term.op(0), x = term.op(1);
                         E *= GiNaC::pow((x + GiNaC::I * y) / GiNaC::sqrt(GiNaC::expand(x * x + y * y)), c);
                         continue;
