@@ -158,3 +158,31 @@ TEST(SignalsTheory, SobreroSecondOrderSignalsLiveInEpsNC) {
     EXPECT_EQ(S.evaluate("sobrero_subalgebra(one(S))").as_list()[0].as_list().size(), 3u);  // R, C, P
     EXPECT_TRUE(S.evaluate("sobrero_subalgebra(one(S))[1]").as_ex().is_equal(6));
 }
+
+// The generic scalar pieces these items needed (scalar.h): the zero test relates the angles of
+// one monomial over the lcm of their denominators, the multiples of pi over one algebraic
+// e^(i pi/L), and rational powers with symbolic exponents over primes; atan2_exact proves an
+// angle or leaves atan2. Nonzero stays not proved.
+TEST(SignalsTheory, ZeroTestAnglesPowersAndExactAtan2) {
+    using GiNaC::cos;
+    using GiNaC::sin;
+    using GiNaC::Pi;
+    const GiNaC::symbol k("k");
+    const GiNaC::ex h = GiNaC::numeric(1, 2);
+    EXPECT_TRUE(is_zero_scalar(cos(GiNaC::ex(2)) - 2 * GiNaC::pow(cos(GiNaC::ex(1)), 2) + 1));
+    EXPECT_TRUE(is_zero_scalar(cos(GiNaC::ex(1)) - 2 * GiNaC::pow(cos(h), 2) + 1));
+    EXPECT_TRUE(is_zero_scalar(cos(k + 1) - cos(GiNaC::ex(1)) * cos(k) + sin(GiNaC::ex(1)) * sin(k)));
+    EXPECT_TRUE(is_zero_scalar(cos((k + 2) * Pi / 5) + cos(k * Pi / 5) - (1 + GiNaC::sqrt(GiNaC::ex(5))) / 2 * cos((k + 1) * Pi / 5)));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::pow(GiNaC::numeric(1, 3), k) - GiNaC::pow(3, -k)));
+    EXPECT_TRUE(is_zero_scalar(GiNaC::pow(9, -k / 2) - GiNaC::pow(3, -k)));
+    EXPECT_FALSE(is_zero_scalar(cos(GiNaC::ex(1)) - cos(h)));
+    EXPECT_FALSE(is_zero_scalar(GiNaC::pow(GiNaC::numeric(1, 3), k) - GiNaC::pow(2, -k)));
+    EXPECT_TRUE(atan2_exact(GiNaC::sqrt(GiNaC::ex(3)) / 2, h).is_equal(Pi / 3));
+    EXPECT_TRUE(atan2_exact(-GiNaC::sqrt(GiNaC::ex(3)) / 2, -h).is_equal(-2 * Pi / 3));
+    EXPECT_TRUE(atan2_exact(sin(GiNaC::ex(1)), cos(GiNaC::ex(1))).is_equal(1));
+    EXPECT_TRUE(atan2_exact(GiNaC::sqrt(1 - GiNaC::pow(cos(GiNaC::ex(2)), 2)), cos(GiNaC::ex(2))).is_equal(2));
+    // not an angle it can prove: unchanged
+    EXPECT_TRUE(GiNaC::is_a<GiNaC::function>(atan2_exact(GiNaC::sqrt(GiNaC::ex(2)) / 3, GiNaC::numeric(1, 6))));
+    // sin(1) with the wrong sign: 1 is not the angle of (-sin 1, cos 1)
+    EXPECT_FALSE(atan2_exact(-sin(GiNaC::ex(1)), cos(GiNaC::ex(1))).is_equal(1));
+}

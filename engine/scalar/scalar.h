@@ -81,6 +81,10 @@ bool has_symbolic_square_root(const GiNaC::ex& e);
 /// that sqrt(x^2 + y^2) meets the modulus it came from.
 GiNaC::ex trig_of_arctangents(const GiNaC::ex& e);
 
+/// expand(e) with every sin(u)^2 written 1 - cos(u)^2 (GiNaC's algebraic substitution: sin(u)^4 too):
+/// cos(1)^2 + sin(1)^2 becomes 1.
+GiNaC::ex sines_squared_as_cosines(const GiNaC::ex& e);
+
 /// atan2(y, x) for real constants y, x (no symbols) as an exact angle where one is proved:
 /// u with x sin(u) - y cos(u) = 0 (the exact zero test) and x cos(u) + y sin(u) > 0 (at 40
 /// digits, clear of 0), -pi < u <= pi (at 40 digits), u a rational multiple of pi (denominator

@@ -598,6 +598,12 @@ GiNaC::ex simplify_scalar(const GiNaC::ex& x) {
     return canonical_radicals(in_square_roots_field(z));
 }
 
+GiNaC::ex sines_squared_as_cosines(const GiNaC::ex& e) {
+    const GiNaC::wildcard u(0);
+    return GiNaC::expand(GiNaC::expand(e).subs(GiNaC::pow(GiNaC::sin(u), 2) == 1 - GiNaC::pow(GiNaC::cos(u), 2),
+                                               GiNaC::subs_options::algebraic));
+}
+
 GiNaC::ex atan2_exact(const GiNaC::ex& y, const GiNaC::ex& x) {
     const GiNaC::ex fallback = GiNaC::atan2(y, x);
     if (has_symbol(y) || has_symbol(x)) return fallback;
@@ -642,11 +648,7 @@ GiNaC::ex atan2_exact(const GiNaC::ex& y, const GiNaC::ex& x) {
         if (!evaluate_numeric(ya, 40, a) || !evaluate_numeric(xb, 40, b) || !a.is_real() || !b.is_real() ||
             GiNaC::abs(a) < GiNaC::numeric(1, 1000000000) || (a > 0) != (b > 0))
             continue;
-        const GiNaC::wildcard w(0);
-        if (is_zero_scalar(GiNaC::expand(ya * ya - xb * xb)
-                               .subs(GiNaC::pow(GiNaC::sin(w), 2) == 1 - GiNaC::pow(GiNaC::cos(w), 2),
-                                     GiNaC::subs_options::algebraic)))
-            return u;
+        if (is_zero_scalar(sines_squared_as_cosines(ya * ya - xb * xb))) return u;
     }
     return fallback;
 }

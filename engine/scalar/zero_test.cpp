@@ -62,7 +62,8 @@ GiNaC::ex rational_logs_over_primes(const GiNaC::ex& e, bool symbolic_exponents)
             if (symbolic && GiNaC::is_a<GiNaC::power>(y) && is_positive_rational(y.op(0)) && !y.op(0).is_equal(1) &&
                 !GiNaC::is_a<GiNaC::numeric>(y.op(1))) {
                 const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(y.op(0));
-                return power_of_integer(r.numer(), y.op(1)) / power_of_integer(r.denom(), y.op(1));
+                // times q^(-u), not divided by q^u: GiNaC keeps 1/3^k apart from 3^(-k)
+                return power_of_integer(r.numer(), y.op(1)) * power_of_integer(r.denom(), -y.op(1));
             }
             if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1 ||
                 GiNaC::ex_to<GiNaC::function>(y).get_name() != "log")

@@ -54,9 +54,12 @@ int leading_sign_by_names(const GiNaC::ex& p0) {
 /// collected by their factors in t (sin(2 t), sin(c t), e^(-t), t^k), each coefficient one
 /// reduced fraction (normal) with expanded numerator and denominator, the denominator's
 /// leading coefficient by names positive.
-GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
+namespace {
+
+/// The terms of x collected by their factors in t: (part in t, coefficient), in order of appearance.
+std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_parts_in(const GiNaC::ex& x, const GiNaC::ex& t) {
     const GiNaC::ex e = GiNaC::expand(x);
-    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_part;  // (part in t, coefficient)
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_part;
     for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
         const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
         GiNaC::ex part = 1, coefficient = 1;
@@ -68,8 +71,14 @@ GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
         if (it == by_part.end()) by_part.emplace_back(part, coefficient);
         else it->second += coefficient;
     }
+    return by_part;
+}
+
+}  // namespace
+
+GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
     GiNaC::ex out = 0;
-    for (const auto& [part, coefficient] : by_part) {
+    for (const auto& [part, coefficient] : by_parts_in(x, t)) {
         const GiNaC::ex nd = GiNaC::normal(coefficient).numer_denom();
         GiNaC::ex num = GiNaC::expand(nd.op(0)), den = GiNaC::expand(nd.op(1));
         if (leading_sign_by_names(den) < 0) {
@@ -413,26 +422,8 @@ void canonical_forms(system_response& out, const GiNaC::symbol& t) {
 // collected by their factors in k, each one fraction with sin(u)^2 written 1 - cos(u)^2.
 void discrete_forms(system_response& out, const GiNaC::symbol& k) {
     const auto form = [&](const ex& x) {
-        const GiNaC::wildcard u(0);
-        const ex e = GiNaC::expand(x);
-        std::vector<std::pair<ex, ex>> by_part;
-        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
-            const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
-            ex part = 1, coefficient = 1;
-            for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1); ++j) {
-                const ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
-                (f.has(k) ? part : coefficient) *= f;
-            }
-            auto it = std::find_if(by_part.begin(), by_part.end(), [&](const auto& q) { return q.first.is_equal(part); });
-            if (it == by_part.end()) by_part.emplace_back(part, coefficient);
-            else it->second += coefficient;
-        }
         ex sum = 0;
-        for (const auto& [part, c] : by_part) {
-            const ex reduced = GiNaC::expand(c).subs(GiNaC::pow(GiNaC::sin(u), 2) == 1 - GiNaC::pow(GiNaC::cos(u), 2),
-                                                     GiNaC::subs_options::algebraic);
-            sum += GiNaC::normal(reduced) * part;
-        }
+        for (const auto& [part, c] : by_parts_in(x, k)) sum += GiNaC::normal(sines_squared_as_cosines(c)) * part;
         return sum;
     };
     out.particular = form(out.particular);
