@@ -154,6 +154,10 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
         // meets cos(1) (the rational numbers as the monomial 1)
         std::map<GiNaC::ex, GiNaC::numeric, GiNaC::ex_is_less> L;
         bool exponentials = false;  ///< also write exp(u) through the Y_m
+        /// GiNaC knows cos(c pi) and sin(c pi) in radicals for every multiple of pi in the arguments:
+        /// each e^(i c pi) is then its own algebraic number (nested radicals of one base e^(i pi/L),
+        /// such as sin(pi/12) = sqrt(1 - cos(pi/12)^2), would hide their relations)
+        bool pi_values_known = true;
         void collect(const GiNaC::ex& e) {
             for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
                 if (!is_trig_or_exponential(*it)) continue;
@@ -164,6 +168,10 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                     if (!GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) continue;
                     auto at = L.emplace(m, GiNaC::numeric(1)).first;
                     at->second = GiNaC::lcm(at->second, GiNaC::ex_to<GiNaC::numeric>(c).denom());
+                    if (m.is_equal(GiNaC::Pi)) {
+                        const GiNaC::ex z = GiNaC::cos(c * GiNaC::Pi) + GiNaC::I * GiNaC::sin(c * GiNaC::Pi);
+                        if (z.has(GiNaC::cos(GiNaC::wild())) || z.has(GiNaC::sin(GiNaC::wild()))) pi_values_known = false;
+                    }
                 }
             }
         }
@@ -195,7 +203,8 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                     // (c with denominator 1, 2, 3, 4, 6, ...), so that sin(pi - x) meets sin(x)
                     // one base e^(i pi/L) for all the multiples of pi where GiNaC knows cos(pi/L): the
                     // phases k pi/5 and 2 pi/5 then meet as powers of one algebraic number
-                    if (GiNaC::is_a<GiNaC::numeric>(c) && (c * Lm).info(GiNaC::info_flags::integer) && Lm > 1) {
+                    if (!pi_values_known && GiNaC::is_a<GiNaC::numeric>(c) && (c * Lm).info(GiNaC::info_flags::integer) &&
+                        Lm > 1) {
                         const GiNaC::ex base = unit_root(Lm);
                         if (!base.is_zero()) {
                             E *= GiNaC::pow(base, c * Lm);
