@@ -13,6 +13,7 @@
 #include "signals/multicomplex_signals.h"
 #include "signals/representation.h"
 #include "signals/response.h"
+#include "signals/z_transform.h"
 
 namespace symrep::lang {
 
@@ -164,6 +165,10 @@ value builtin_sequence_response(const builtin& b, const std::vector<value>& a, c
     return response_list(signals::respond_discrete(as, bs, arg_ex(a, 2, b), arg_symbol(a, 3, b)));
 }
 
+value builtin_z_transform(const builtin& b, const std::vector<value>& a, context&) {
+    return signals::z_transform(arg_ex(a, 0, b), arg_symbol(a, 1, b), arg_ex(a, 2, b));
+}
+
 value builtin_modulation(const builtin& b, const std::vector<value>& a, context&) {
     const element& w = arg_element(a, 0, b);
     const GiNaC::symbol& t = arg_symbol(a, 1, b);
@@ -290,6 +295,14 @@ void register_signals_builtins(registry& r) {
          "the sequence f(k) in closed form: [particular, zero_state, report], as response() for analog systems; "
          "zero_state has x(0) = ... = x(m-1) = 0 (IV.3.19).",
          "(IV.3.7-19), Thm IV.3.2.1", "sequence_response([1, -1/2], [1], 1, k)", 4, 4, builtin_sequence_response},
+        {"z_transform", "z_transform(f, k, z)",
+         "Z{f}(z) = sum_(k >= 0) f(k) z^(-k) for a sequence f(k) in closed form (as sequence_annihilator reads it), "
+         "derived from its representation: f(k) = lambda(w d^k) gives Z{f} = z lambda(w Q(z, d))/p(z), "
+         "Q(z, X) = (p(z) - p(X))/(z - X), p the sequence's least equation; valid for |z| beyond every root of p. "
+         "The Z transfer function of remark 4: the zero-state response x of sequence_response has "
+         "p(z) Z{x} = q(z) Z{f} - sum_(i=1..p) q_i sum_(j<i) f(j) z^(i-j) (q_i the coefficient of z^i in q), "
+         "so Z{x} = (q(z)/p(z)) Z{f} for an input side b = [b_0] (docs/signals.md).",
+         "IV.3.2 remark 4, Thm II.3.3", "z_transform(k*2^k, k, z)", 3, 3, builtin_z_transform},
         {"modulation", "modulation(w, t, d)",
          "The signal represented by w as a carrier with amplitude and phase modulation: [a, b, A, theta] with "
          "signal(w, t, d) = a cos(omega t) + b sin(omega t) = A cos(omega t - theta), A = sqrt(a^2 + b^2), "

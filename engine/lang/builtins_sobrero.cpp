@@ -7,6 +7,7 @@
 
 #include "algebra/sobrero.h"
 #include "lang/builtins.h"
+#include "signals/sobrero_subalgebra.h"
 
 namespace symrep::lang {
 
@@ -37,6 +38,14 @@ value builtin_sobrero_eps(const builtin& b, const std::vector<value>& args, cont
     return value(element(S, S->eps()));
 }
 
+value builtin_sobrero_subalgebra(const builtin& b, const std::vector<value>& args, context&) {
+    const element& w = arg_element(args, 0, b);
+    const auto place = signals::sobrero_subalgebra(w.parent(), w.coefficients());
+    list names;
+    for (const auto& s : place.subalgebras) names.push_back(value(s));
+    return list{value(names), value(GiNaC::ex(place.signal_order)), value(place.report)};
+}
+
 }  // namespace
 
 void register_sobrero_builtins(registry& r) {
@@ -55,6 +64,14 @@ void register_sobrero_builtins(registry& r) {
          "The nilpotent generator eps of the Sobrero algebra A (eps^(n+1) = 0; "
          "zero in sobrero(0)).",
          "(III.2.2-3)", "sobrero_eps(sobrero(2))", 1, 1, builtin_sobrero_eps},
+        {"sobrero_subalgebra", "sobrero_subalgebra(w)",
+         "Where the element w of a Sobrero algebra sobrero(n) lies, as a representation of signals with "
+         "d = delta + eps + j omega (omega != 0): [subalgebras, order, report], subalgebras those of R, C, P "
+         "(IV.1.2.7) and eps^n C holding w, order = 2 (n + 1 - k0) the order of the least equation of the "
+         "signal Psi^-1(w), w in eps^k0 S. The second-order signals A e^(delta t) cos(omega t - phi) are "
+         "represented in eps^n C, not in R or C as IV.1.2.31-35 print (true only for n = 0; FORMULAS.md).",
+         "(IV.1.2.7, 26-37 corrected)", "sobrero_subalgebra(represent(exp(-t)*cos(2*t), t, -1 + "
+         "sobrero_eps(sobrero(1)) + 2*sobrero_j(sobrero(1))))", 1, 1, builtin_sobrero_subalgebra},
     });
 }
 

@@ -81,6 +81,17 @@ bool has_symbolic_square_root(const GiNaC::ex& e);
 /// that sqrt(x^2 + y^2) meets the modulus it came from.
 GiNaC::ex trig_of_arctangents(const GiNaC::ex& e);
 
+/// expand(e) with every sin(u)^2 written 1 - cos(u)^2 (GiNaC's algebraic substitution: sin(u)^4 too):
+/// cos(1)^2 + sin(1)^2 becomes 1.
+GiNaC::ex sines_squared_as_cosines(const GiNaC::ex& e);
+
+/// atan2(y, x) for real constants y, x (no symbols) as an exact angle where one is proved:
+/// u with x sin(u) - y cos(u) = 0 (the exact zero test) and x cos(u) + y sin(u) > 0 (at 40
+/// digits, clear of 0), -pi < u <= pi (at 40 digits), u a rational multiple of pi (denominator
+/// <= 60) or the argument of a cos or sin in x or y: atan2(sqrt(3)/2, 1/2) = pi/3,
+/// atan2(sin(1), cos(1)) = 1. Otherwise atan2(y, x) unchanged (never a guess).
+GiNaC::ex atan2_exact(const GiNaC::ex& y, const GiNaC::ex& x);
+
 /// Exact zero test: true when the expression normalizes to 0 (logarithms and
 /// powers of rational numbers are compared over primes, sin, cos, tan and the
 /// hyperbolic functions through exponentials, and square roots of expressions

@@ -598,4 +598,59 @@ GiNaC::ex simplify_scalar(const GiNaC::ex& x) {
     return canonical_radicals(in_square_roots_field(z));
 }
 
+GiNaC::ex sines_squared_as_cosines(const GiNaC::ex& e) {
+    const GiNaC::wildcard u(0);
+    return GiNaC::expand(GiNaC::expand(e).subs(GiNaC::pow(GiNaC::sin(u), 2) == 1 - GiNaC::pow(GiNaC::cos(u), 2),
+                                               GiNaC::subs_options::algebraic));
+}
+
+GiNaC::ex atan2_exact(const GiNaC::ex& y, const GiNaC::ex& x) {
+    const GiNaC::ex fallback = GiNaC::atan2(y, x);
+    if (has_symbol(y) || has_symbol(x)) return fallback;
+    GiNaC::numeric v;
+    if (!evaluate_numeric(fallback, 40, v) || !v.is_real()) return fallback;
+    std::vector<GiNaC::ex> candidates;
+    // the rational multiple of pi nearest v/pi with a denominator <= 60 (continued fraction)
+    GiNaC::numeric r;
+    if (evaluate_numeric(fallback / GiNaC::Pi, 40, r) && r.is_real()) {
+        GiNaC::numeric h0 = 0, h1 = 1, k0 = 1, k1 = 0, a = r;
+        for (int i = 0; i < 12; ++i) {
+            if (GiNaC::abs(a) > 1000000) break;  // the next denominator exceeds 60
+            const GiNaC::numeric q(static_cast<long>(std::floor(a.to_double())));
+            const GiNaC::numeric h = q * h1 + h0, k = q * k1 + k0;
+            if (k > 60) break;
+            candidates.push_back(h / k * GiNaC::Pi);
+            h0 = h1; h1 = h; k0 = k1; k1 = k;
+            if (a == q) break;
+            a = 1 / (a - q);
+        }
+    }
+    for (auto it = y.preorder_begin(); it != y.preorder_end(); ++it)
+        if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(*it))
+            candidates.push_back(it->op(0));
+    for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+        if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(*it) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(*it))
+            candidates.push_back(it->op(0));
+    const GiNaC::numeric pi = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(GiNaC::Pi));
+    for (const GiNaC::ex& u : candidates) {
+        GiNaC::numeric uv, radius;
+        if (!evaluate_numeric(u, 40, uv) || !uv.is_real()) continue;
+        if (GiNaC::abs(uv - v) > GiNaC::numeric(1, 1000000000)) continue;  // not this angle
+        if (!(uv > -pi + GiNaC::numeric(1, 1000000000)) || uv > pi) continue;
+        if (!evaluate_numeric(x * GiNaC::cos(u) + y * GiNaC::sin(u), 40, radius) || !radius.is_real() ||
+            radius < GiNaC::numeric(1, 1000000000))
+            continue;
+        if (is_zero_scalar(GiNaC::expand(x * GiNaC::sin(u) - y * GiNaC::cos(u)))) return u;
+        // y cos(u) = x sin(u) through their squares (sin(u)^2 = 1 - cos(u)^2) and their signs, both
+        // clear of 0 at 40 digits: y = sqrt(1 - cos(2)^2) meets sin(2)
+        GiNaC::numeric a, b;
+        const GiNaC::ex ya = y * GiNaC::cos(u), xb = x * GiNaC::sin(u);
+        if (!evaluate_numeric(ya, 40, a) || !evaluate_numeric(xb, 40, b) || !a.is_real() || !b.is_real() ||
+            GiNaC::abs(a) < GiNaC::numeric(1, 1000000000) || (a > 0) != (b > 0))
+            continue;
+        if (is_zero_scalar(sines_squared_as_cosines(ya * ya - xb * xb))) return u;
+    }
+    return fallback;
+}
+
 }  // namespace symrep

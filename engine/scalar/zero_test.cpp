@@ -24,9 +24,12 @@ bool is_positive_rational(const GiNaC::ex& x) {
 
 }  // namespace
 
-GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
+namespace {
+
+GiNaC::ex rational_logs_over_primes(const GiNaC::ex& e, bool symbolic_exponents) {
     struct expand_logs : GiNaC::map_function {
         cofactor_bases refined;
+        bool symbolic = false;  ///< also r^u for a non-numeric u: (1/3)^k = 3^(-k), 6^k = 2^k 3^k
         const std::vector<std::pair<GiNaC::numeric, long>>& over_bases(const GiNaC::numeric& c) {
             auto it = refined.find(c);
             if (it == refined.end()) it = refined.emplace(c, std::vector<std::pair<GiNaC::numeric, long>>{{c, 1}}).first;
@@ -57,6 +60,12 @@ GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
                 const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(y.op(0));
                 return power_of_integer(r.numer(), y.op(1)) / power_of_integer(r.denom(), y.op(1));
             }
+            if (symbolic && GiNaC::is_a<GiNaC::power>(y) && is_positive_rational(y.op(0)) && !y.op(0).is_equal(1) &&
+                !GiNaC::is_a<GiNaC::numeric>(y.op(1))) {
+                const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(y.op(0));
+                // times q^(-u), not divided by q^u: GiNaC keeps 1/3^k apart from 3^(-k)
+                return power_of_integer(r.numer(), y.op(1)) * power_of_integer(r.denom(), -y.op(1));
+            }
             if (!GiNaC::is_a<GiNaC::function>(y) || y.nops() != 1 ||
                 GiNaC::ex_to<GiNaC::function>(y).get_name() != "log")
                 return y;
@@ -78,8 +87,13 @@ GiNaC::ex expand_rational_logs(const GiNaC::ex& e) {
         }
     } m;
     m.refined = refine_cofactors(e);
+    m.symbolic = symbolic_exponents;
     return m(e);
 }
+
+}  // namespace
+
+GiNaC::ex expand_rational_logs(const GiNaC::ex& e) { return rational_logs_over_primes(e, false); }
 
 bool has_tan_or_hyperbolic(const GiNaC::ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
@@ -102,43 +116,130 @@ bool has_related_exponentials(const GiNaC::ex& e) {
     return false;
 }
 
+namespace {
+
+/// A term of a trigonometric argument as c m: m a monomial (1 for a rational number), c a number.
+std::pair<GiNaC::ex, GiNaC::ex> monomial_and_coefficient(const GiNaC::ex& term) {
+    if (GiNaC::is_a<GiNaC::numeric>(term)) return {1, term};
+    if (GiNaC::is_a<GiNaC::mul>(term) && GiNaC::is_a<GiNaC::numeric>(term.op(term.nops() - 1))) {
+        const GiNaC::ex c = term.op(term.nops() - 1);
+        return {term / c, c};
+    }
+    return {term, 1};
+}
+
+/// Real: GiNaC says so, or a constant whose value is a real number (sqrt(2)/3, which GiNaC's
+/// info flags do not call real).
+bool is_real_argument(const GiNaC::ex& z) {
+    if (z.info(GiNaC::info_flags::real)) return true;
+    if (has_symbol(z)) return false;
+    const GiNaC::ex v = GiNaC::evalf(z);
+    return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+}
+
+bool is_trig_or_exponential(const GiNaC::ex& y) {
+    return GiNaC::is_a<GiNaC::function>(y) && y.nops() == 1 &&
+           (GiNaC::is_the_function<GiNaC::sin_SERIAL>(y) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(y) ||
+            GiNaC::is_the_function<GiNaC::tan_SERIAL>(y) || GiNaC::is_the_function<GiNaC::sinh_SERIAL>(y) ||
+            GiNaC::is_the_function<GiNaC::cosh_SERIAL>(y) || GiNaC::is_the_function<GiNaC::tanh_SERIAL>(y) ||
+            GiNaC::is_the_function<GiNaC::exp_SERIAL>(y));
+}
+
+}  // namespace
+
 GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
     struct to_exp : GiNaC::map_function {
         std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> X, Y;
+        // per monomial m, the lcm L_m of the denominators of its rational coefficients in all the
+        // arguments: X_m stands for e^(i m / L_m), so that cos(t/2) meets cos(t) and cos(1/2)
+        // meets cos(1) (the rational numbers as the monomial 1)
+        std::map<GiNaC::ex, GiNaC::numeric, GiNaC::ex_is_less> L;
         bool exponentials = false;  ///< also write exp(u) through the Y_m
-        // prod over the terms c m of u of V_m^c, times e^(k c0) for a numeric term c0
+        /// GiNaC knows cos(c pi) and sin(c pi) in radicals for every multiple of pi in the arguments:
+        /// each e^(i c pi) is then its own algebraic number (nested radicals of one base e^(i pi/L),
+        /// such as sin(pi/12) = sqrt(1 - cos(pi/12)^2), would hide their relations)
+        bool pi_values_known = true;
+        void collect(const GiNaC::ex& e) {
+            for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+                if (!is_trig_or_exponential(*it)) continue;
+                const GiNaC::ex u = GiNaC::expand(it->op(0));
+                if (u.has(GiNaC::I)) continue;
+                for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(u) ? u.nops() : 1); ++i) {
+                    const auto [m, c] = monomial_and_coefficient(GiNaC::is_a<GiNaC::add>(u) ? u.op(i) : u);
+                    if (!GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) continue;
+                    auto at = L.emplace(m, GiNaC::numeric(1)).first;
+                    at->second = GiNaC::lcm(at->second, GiNaC::ex_to<GiNaC::numeric>(c).denom());
+                    if (m.is_equal(GiNaC::Pi)) {
+                        const GiNaC::ex z = GiNaC::cos(c * GiNaC::Pi) + GiNaC::I * GiNaC::sin(c * GiNaC::Pi);
+                        if (z.has(GiNaC::cos(GiNaC::wild())) || z.has(GiNaC::sin(GiNaC::wild()))) pi_values_known = false;
+                    }
+                }
+            }
+        }
+        // e^(i pi/L) in radicals, sin(pi/L) = sqrt(1 - cos(pi/L)^2) (L > 1); 0 where GiNaC does not know
+        // cos(pi/L) in radicals
+        static GiNaC::ex unit_root(const GiNaC::numeric& L) {
+            const GiNaC::ex cs = GiNaC::cos(GiNaC::Pi / L);
+            if (cs.has(GiNaC::cos(GiNaC::wild()))) return 0;
+            return cs + GiNaC::I * GiNaC::sqrt(GiNaC::expand(1 - cs * cs));
+        }
+        GiNaC::numeric denominator_of(const GiNaC::ex& m) const {
+            const auto it = L.find(m);
+            return it == L.end() ? GiNaC::numeric(1) : it->second;
+        }
+        // prod over the terms c m of u of V_m^(c L_m) (V_m standing for e^(k m / L_m)), a
+        // non-rational numeric term c0 kept as the number e^(k c0)
         GiNaC::ex power(const GiNaC::ex& u, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& V, const GiNaC::ex& k) {
             GiNaC::ex E = 1;
             for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(u) ? u.nops() : 1); ++i) {
-                GiNaC::ex term = GiNaC::is_a<GiNaC::add>(u) ? u.op(i) : u, c = 1;
-                if (GiNaC::is_a<GiNaC::numeric>(term)) {  // a constant phase: keep it as a number
-                    E *= GiNaC::exp(k * term);
+                const GiNaC::ex whole = GiNaC::is_a<GiNaC::add>(u) ? u.op(i) : u;
+                if (GiNaC::is_a<GiNaC::numeric>(whole) && !GiNaC::ex_to<GiNaC::numeric>(whole).is_rational()) {
+                    E *= GiNaC::exp(k * whole);  // a float phase: kept as a number
                     continue;
                 }
-                if (GiNaC::is_a<GiNaC::mul>(term) && GiNaC::is_a<GiNaC::numeric>(term.op(term.nops() - 1))) {
-                    c = term.op(term.nops() - 1);
-                    term = term / c;
-                }
+                auto [term, c] = monomial_and_coefficient(whole);
+                const GiNaC::numeric Lm = denominator_of(term);
                 if (term.is_equal(GiNaC::Pi) && k.is_equal(GiNaC::I)) {
                     // e^(i c pi) is an algebraic number: exact where GiNaC knows cos and sin of c pi
                     // (c with denominator 1, 2, 3, 4, 6, ...), so that sin(pi - x) meets sin(x)
-                    const GiNaC::ex z = GiNaC::cos(c * GiNaC::Pi) + GiNaC::I * GiNaC::sin(c * GiNaC::Pi);
+                    // one base e^(i pi/L) for all the multiples of pi where GiNaC knows cos(pi/L): the
+                    // phases k pi/5 and 2 pi/5 then meet as powers of one algebraic number
+                    if (!pi_values_known && GiNaC::is_a<GiNaC::numeric>(c) && (c * Lm).info(GiNaC::info_flags::integer) &&
+                        Lm > 1) {
+                        const GiNaC::ex base = unit_root(Lm);
+                        if (!base.is_zero()) {
+                            E *= GiNaC::pow(base, c * Lm);
+                            continue;
+                        }
+                    }
+                    const GiNaC::ex cs = GiNaC::cos(c * GiNaC::Pi);
+                    GiNaC::ex sn = GiNaC::sin(c * GiNaC::Pi);
+                    if (!cs.has(GiNaC::cos(GiNaC::wild())) && sn.has(GiNaC::sin(GiNaC::wild())) &&
+                        GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) {
+                        // GiNaC knows cos(pi/5), not sin(pi/5): sin(c pi) = +-sqrt(1 - cos(c pi)^2), the
+                        // sign that of sin on (0, pi) or (pi, 2 pi) by c mod 2 (c not an integer here)
+                        const GiNaC::numeric cn = GiNaC::ex_to<GiNaC::numeric>(c);
+                        const GiNaC::numeric r = cn - 2 * GiNaC::iquo(cn.numer(), 2 * cn.denom());
+                        const bool positive = (r > 0 && r < 1) || (r > -2 && r < -1);
+                        sn = (positive ? 1 : -1) * GiNaC::sqrt(GiNaC::expand(1 - cs * cs));
+                    }
+                    const GiNaC::ex z = cs + GiNaC::I * sn;
                     if (!z.has(GiNaC::cos(GiNaC::wild())) && !z.has(GiNaC::sin(GiNaC::wild()))) {
                         E *= z;
                         continue;
                     }
                 }
                 if (k.is_equal(GiNaC::I) && GiNaC::is_a<GiNaC::numeric>(c) &&
-                    GiNaC::ex_to<GiNaC::numeric>(c).is_integer()) {
+                    GiNaC::ex_to<GiNaC::numeric>(c).is_integer() && Lm == 1) {
                     // e^(i atan z) = (1 + i z)/sqrt(1 + z^2) and e^(i atan2(y, x)) = (x + i y)/sqrt(x^2 + y^2)
                     // for real z, x, y: cos(pi - atan(2)) meets -1/sqrt(5)
-                    if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(term) && term.op(0).info(GiNaC::info_flags::real)) {
+                    if (GiNaC::is_the_function<GiNaC::atan_SERIAL>(term) && is_real_argument(term.op(0))) {
                         const GiNaC::ex z = term.op(0);
                         E *= GiNaC::pow((1 + GiNaC::I * z) / GiNaC::sqrt(GiNaC::expand(1 + z * z)), c);
                         continue;
                     }
-                    if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(term) && term.op(0).info(GiNaC::info_flags::real) &&
-                        term.op(1).info(GiNaC::info_flags::real)) {
+                    if (GiNaC::is_the_function<GiNaC::atan2_SERIAL>(term) && is_real_argument(term.op(0)) &&
+                        is_real_argument(term.op(1))) {
                         const GiNaC::ex y = term.op(0), x = term.op(1);
                         E *= GiNaC::pow((x + GiNaC::I * y) / GiNaC::sqrt(GiNaC::expand(x * x + y * y)), c);
                         continue;
@@ -146,7 +247,7 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
                 }
                 auto it = V.find(term);
                 if (it == V.end()) it = V.emplace(term, GiNaC::realsymbol()).first;  // a formal variable
-                E *= GiNaC::pow(it->second, c);
+                E *= GiNaC::pow(it->second, c * Lm);
             }
             return E;
         }
@@ -169,6 +270,7 @@ GiNaC::ex trig_exponential_form(const GiNaC::ex& e) {
         }
     } f;
     f.exponentials = has_tan_or_hyperbolic(e) || has_related_exponentials(e);
+    f.collect(e);
     return f(e);
 }
 
@@ -371,7 +473,8 @@ bool is_zero_scalar(const GiNaC::ex& x) {
     if (x.is_zero()) return true;
     if (x.has(GiNaC::atan(GiNaC::wild())) && !has_symbol(x) && is_zero_arctangent_sum(x)) return true;
     guard_expansion(x, "zero test", true);
-    const GiNaC::ex y = expand_rational_logs(trig_of_arctangents(x));
+    // powers of rationals with symbolic exponents over primes too ((1/3)^k = 3^(-k))
+    const GiNaC::ex y = rational_logs_over_primes(trig_of_arctangents(x), true);
     // square roots of expressions first as algebraic symbols: faster than normal(),
     // whose gcds over such atoms are slow, and complete where normal() is not
     if (has_symbolic_square_root(y)) {

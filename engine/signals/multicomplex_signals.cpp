@@ -138,7 +138,12 @@ amplitude_modulation amplitude_modulated(const multicomplex& A, const coeffs& w)
     amplitude_modulation r;
     const auto decide = [&](const ex& x, const std::string& what, bool show_difference = true) -> bool {
         const ex e = tidy(x.expand());
-        const ex parts[2] = {tidy(GiNaC::real_part(e)), tidy(GiNaC::imag_part(e))};
+        // without I the expression itself (its real part taken by GiNaC would write cos(u) of a real
+        // u as cos(real_part(u)) cosh(imag_part(u)), which the zero test cannot read): 0 proved is
+        // both parts 0, seen nonzero is one part nonzero
+        const std::vector<ex> parts = e.has(GiNaC::I) ? std::vector<ex>{tidy(GiNaC::real_part(e)),
+                                                                          tidy(GiNaC::imag_part(e))}
+                                                        : std::vector<ex>{e};
         for (const ex& part : parts) {
             const zero_decision d = decide_zero(part);
             if (d.is_zero == truth::no) {

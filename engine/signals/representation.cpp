@@ -367,7 +367,8 @@ coeffs power(const representation& R, const ex& k) {
             return;
         }
         // (re + i im)^(k - j) = rho^(k-j) (cos((k-j) theta) + i sin((k-j) theta))
-        const ex rho = GiNaC::sqrt(tidy(re * re + im * im)), theta = GiNaC::atan2(im, re);
+        // |rho|^2 with sin(u)^2 = 1 - cos(u)^2: the ratio e^(i c) of cos(c k) has modulus 1
+        const ex rho = GiNaC::sqrt(tidy(sines_squared_as_cosines(re * re + im * im))), theta = atan2_exact(im, re);
         out_re = falling * GiNaC::pow(rho, k - j) * GiNaC::cos((k - j) * theta);
         out_im = falling * GiNaC::pow(rho, k - j) * GiNaC::sin((k - j) * theta);
     };

@@ -54,9 +54,12 @@ int leading_sign_by_names(const GiNaC::ex& p0) {
 /// collected by their factors in t (sin(2 t), sin(c t), e^(-t), t^k), each coefficient one
 /// reduced fraction (normal) with expanded numerator and denominator, the denominator's
 /// leading coefficient by names positive.
-GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
+namespace {
+
+/// The terms of x collected by their factors in t: (part in t, coefficient), in order of appearance.
+std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_parts_in(const GiNaC::ex& x, const GiNaC::ex& t) {
     const GiNaC::ex e = GiNaC::expand(x);
-    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_part;  // (part in t, coefficient)
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> by_part;
     for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1); ++i) {
         const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
         GiNaC::ex part = 1, coefficient = 1;
@@ -68,8 +71,14 @@ GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
         if (it == by_part.end()) by_part.emplace_back(part, coefficient);
         else it->second += coefficient;
     }
+    return by_part;
+}
+
+}  // namespace
+
+GiNaC::ex parameter_form(const GiNaC::ex& x, const GiNaC::ex& t) {
     GiNaC::ex out = 0;
-    for (const auto& [part, coefficient] : by_part) {
+    for (const auto& [part, coefficient] : by_parts_in(x, t)) {
         const GiNaC::ex nd = GiNaC::normal(coefficient).numer_denom();
         GiNaC::ex num = GiNaC::expand(nd.op(0)), den = GiNaC::expand(nd.op(1));
         if (leading_sign_by_names(den) < 0) {
@@ -215,6 +224,21 @@ void check_system(const std::vector<ex>& a, const std::vector<ex>& b, const GiNa
         if (c.has(t)) throw domain_error("response: a coefficient b_k depends on " + t.get_name());
 }
 
+// M x = y by GiNaC's elimination (solve_any: the forms of the responses are its pivots'), and
+// where that sees an inconsistency, again with the exact zero test (solve_linear, M of full
+// column rank): GiNaC's normal() does not see that cos(2) - 2 cos(1)^2 + 1 or
+// cos(1)^2 + sin(1)^2 - 1 is 0 in a row it has reduced, and would call the system inconsistent.
+bool solve_with_zero_test(const GiNaC::matrix& M, const std::vector<ex>& y, coeffs& x) {
+    if (solve_any(M, y, x)) return true;
+    std::vector<std::vector<ex>> rows(M.rows(), std::vector<ex>(M.cols()));
+    for (unsigned i = 0; i < M.rows(); ++i)
+        for (unsigned j = 0; j < M.cols(); ++j) rows[i][j] = M(i, j);
+    const auto solution = solve_linear(rows, y);
+    if (!solution) return false;
+    x.assign(solution->begin(), solution->end());
+    return true;
+}
+
 // p(d) x = q(d) Psi(f) in the input's class: A = P_r, d = v (IV.3.10-16).
 struct class_solution {
     explicit class_solution(representation rep) : R(std::move(rep)) {}
@@ -236,7 +260,9 @@ class_solution solve_in_input_class(const input_signal& in, const ex& r, const G
     s.y = A.multiply(qd, w);
     s.zero_divisor = A.is_zero_divisor(s.pd);
     const std::vector<ex> yv(s.y.begin(), s.y.end());
-    s.solvable = solve_any(multiplication_matrix(A, s.pd), yv, s.x);
+    // p(d) invertible: solvable (a failure of solve_any is its zero test's, retried exactly)
+    s.solvable = s.zero_divisor ? solve_any(multiplication_matrix(A, s.pd), yv, s.x)
+                                : solve_with_zero_test(multiplication_matrix(A, s.pd), yv, s.x);
     return s;
 }
 
@@ -266,7 +292,7 @@ std::string derive_zero_state(const input_signal& in, const std::vector<ex>& a, 
             vk = B.A->multiply(vk, B.d);
         }
         coeffs xs;
-        if (!solve_any(M, rhs, xs))
+        if (!solve_with_zero_test(M, rhs, xs))
             throw algebra_error("internal: the zero-state response of the system has no solution");
         out.zero_state = in.signal(B, xs);
     } catch (const closed_form_error& e) {
@@ -324,8 +350,8 @@ void classify_in_class(const class_solution& s, const input_signal& in, system_r
 
 // The cases of IV.3.2: filtered out (a), in the input's class (passed, b), or resonant (e:
 // then the particular response is the zero-state response, on the algebra of p r).
-void classify(const class_solution& s, const input_signal& in, const ex& P, const ex& r, const GiNaC::symbol& X,
-              const std::string& zero_state_refused, system_response& out) {
+void classify(const class_solution& s, const input_signal& in, const ex& P, const ex& Q, const ex& r,
+              const GiNaC::symbol& X, const std::string& zero_state_refused, system_response& out) {
     if (algebra::equal(s.y, s.R.A->zero())) {
         out.kind = response_kind::filtered_out;
         out.particular = 0;
@@ -338,15 +364,44 @@ void classify(const class_solution& s, const input_signal& in, const ex& P, cons
         return;
     }
     out.kind = response_kind::resonant;
-    if (!out.has_zero_state)
-        throw domain_error("response: the input resonates with the system, and its response (on the "
-                           "polynomial algebra of p r) is not derived: " + zero_state_refused);
-    out.particular = out.zero_state;
     const GiNaC::symbol Y;
     const ex common = GiNaC::gcd(GiNaC::expand(P.subs(X == Y)), GiNaC::expand(r.subs(X == Y)));
     out.report = "resonant: p and the input's equation share the factor " + polynomial_text(common.subs(Y == X), X) +
                  " and q does not cancel it, so no response is in the input's class (case e of IV.3.2); "
                  "the response has secular terms and lives on the polynomial algebra of p r (Thm IV.3.2.1)";
+    if (out.has_zero_state) {
+        out.particular = out.zero_state;
+        return;
+    }
+    // the roots of p r not all known (a factor of p of degree > 3 without radicals): a particular
+    // response on the algebra of p1 r instead, p1 the largest factor of p whose roots are modes of
+    // the input (their roots are r's, known); p(v) x = q(v) F is solvable there, as p / p1 is
+    // invertible on it (Thm IV.3.2.1 with p1 for p)
+    ex rest = GiNaC::expand(P.subs(X == Y)), p1 = 1;
+    const ex ry = GiNaC::expand(r.subs(X == Y));
+    for (int guard = 0; guard < 64; ++guard) {
+        const ex g = GiNaC::gcd(rest, ry);
+        if (g.degree(Y) < 1) break;
+        p1 = GiNaC::expand(p1 * g);
+        rest = GiNaC::quo(rest, g, Y);
+    }
+    const ex Pi1 = GiNaC::expand(p1.subs(Y == X) * r / p1.subs(Y == X).lcoeff(X));
+    try {
+        const representation B = polynomial_representation(Pi1, X);
+        const coeffs F = in.element(B);
+        const coeffs QF = B.A->multiply(B.A->evaluate_polynomial(Q.subs(X == B.X), B.X, B.d), F);
+        const GiNaC::matrix PM = multiplication_matrix(*B.A, B.A->evaluate_polynomial(P.subs(X == B.X), B.X, B.d));
+        coeffs xs;
+        if (!solve_with_zero_test(PM, std::vector<ex>(QF.begin(), QF.end()), xs))
+            throw algebra_error("internal: the resonant particular response has no solution on the algebra of p1 r");
+        out.particular = in.signal(B, xs);
+    } catch (const closed_form_error& e) {
+        throw domain_error("response: the input resonates with the system, and neither its zero-state response "
+                           "(on the polynomial algebra of p r: " + zero_state_refused +
+                           ") nor a particular response is derived: " + e.what());
+    }
+    out.report += "; the particular response is on the polynomial algebra of p1 r, p1 = " +
+                  polynomial_text(p1.subs(Y == X), X) + " the factor of p on the input's modes";
 }
 
 // One form whatever the pivots of the linear solves were (they follow GiNaC's term order,
@@ -361,6 +416,18 @@ void canonical_forms(system_response& out, const GiNaC::symbol& t) {
     };
     out.particular = canonical_form(out.particular);
     if (out.has_zero_state) out.zero_state = canonical_form(out.zero_state);
+}
+
+// A digital response with its constant coefficients (the ratios' cos(c), sin(c) for cos(c k))
+// collected by their factors in k, each one fraction with sin(u)^2 written 1 - cos(u)^2.
+void discrete_forms(system_response& out, const GiNaC::symbol& k) {
+    const auto form = [&](const ex& x) {
+        ex sum = 0;
+        for (const auto& [part, c] : by_parts_in(x, k)) sum += GiNaC::normal(sines_squared_as_cosines(c)) * part;
+        return sum;
+    };
+    out.particular = form(out.particular);
+    if (out.has_zero_state) out.zero_state = form(out.zero_state);
 }
 
 // Every response substituted into the system (IV.3.7): the residuals p(D) x - q(D) f proved 0
@@ -396,8 +463,9 @@ system_response respond_on(const std::vector<ex>& a, const std::vector<ex>& b, c
     const ex P = system_polynomial(a, X), Q = system_polynomial(b, X);
     const class_solution s = solve_in_input_class(in, r, X, P, Q);
     const std::string zero_state_refused = derive_zero_state(in, a, r, X, P, Q, out);
-    classify(s, in, P, r, X, zero_state_refused, out);
+    classify(s, in, P, Q, r, X, zero_state_refused, out);
     if (!discrete) canonical_forms(out, t);
+    else discrete_forms(out, t);
     if (!out.has_zero_state) out.report += "; the zero-state response is not derived: " + zero_state_refused;
     verify_response(out, in, P, Q, X);
     return out;
