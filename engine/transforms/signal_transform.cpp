@@ -1,6 +1,7 @@
 // symrep/transforms/signal_transform.cpp -- see signal_transform.h.
 #include "transforms/signal_transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -106,8 +107,51 @@ std::vector<piece> pieces_of(const ex& f, const GiNaC::symbol& t, const interval
         for (std::size_t i = 0; i < e.nops(); ++i) one_term(e.op(i));
     else if (!e.is_zero())
         one_term(e);
-    for (piece& p : out) p.h = tidy(p.h);
-    return out;
+    // the partition of `base` by every end: on each cell the sum of the terms covering it (so that
+    // 3 (1 - t/2) (1 - step(t - 2)) is 0 on [2, oo), not two divergent pieces), equal neighbours merged
+    std::vector<GiNaC::numeric> cuts;
+    for (const piece& p : out) {
+        if (!p.I.lo_inf) cuts.push_back(p.I.lo);
+        if (!p.I.hi_inf) cuts.push_back(p.I.hi);
+    }
+    std::sort(cuts.begin(), cuts.end(), [](const GiNaC::numeric& a, const GiNaC::numeric& b) { return a < b; });
+    cuts.erase(std::unique(cuts.begin(), cuts.end(), [](const GiNaC::numeric& a, const GiNaC::numeric& b) { return a == b; }),
+               cuts.end());
+    std::vector<interval> cells;
+    {
+        interval c = base;
+        for (const GiNaC::numeric& x : cuts) {
+            if ((!c.lo_inf && !(x > c.lo)) || (!base.hi_inf && !(x < base.hi))) continue;
+            interval left = c;
+            left.hi_inf = false;
+            left.hi = x;
+            cells.push_back(left);
+            c.lo_inf = false;
+            c.lo = x;
+        }
+        cells.push_back(c);
+    }
+    const auto covers = [](const interval& big, const interval& small) {
+        const bool lo = big.lo_inf || (!small.lo_inf && !(small.lo < big.lo));
+        const bool hi = big.hi_inf || (!small.hi_inf && !(small.hi > big.hi));
+        return lo && hi;
+    };
+    std::vector<piece> merged;
+    for (const interval& c : cells) {
+        ex h = 0;
+        for (const piece& p : out)
+            if (covers(p.I, c)) h += p.h;
+        h = tidy(GiNaC::expand(h));
+        if (h.is_zero()) continue;
+        if (!merged.empty() && !merged.back().I.hi_inf && !c.lo_inf && merged.back().I.hi == c.lo &&
+            is_zero_scalar(tidy(GiNaC::expand(merged.back().h - h)))) {
+            merged.back().I.hi_inf = c.hi_inf;
+            merged.back().I.hi = c.hi;
+            continue;
+        }
+        merged.push_back({c, h});
+    }
+    return merged;
 }
 
 // ---------------------------------------------------------------- exact: quasi-polynomials
@@ -278,13 +322,16 @@ bool numeric_coefficients(const coeffs& d, coeffs& out) {
 // max over terms of Re Q(t) + k log|t| + log|c| (Re Q's leading part governs).
 struct decay {
     bool ok = false;
+    bool grows = false;  ///< every term grows like e^(a |t|^m), m >= 2, a > 0: the integral diverges for every d
     std::vector<gaussian_term> terms;
 };
 decay decay_of(const ex& h, const GiNaC::symbol& t, int sign) {
     decay out;
     const ex e = exponential_form(h);
     std::vector<gaussian_term> terms;
+    std::size_t growing = 0, count = 0;
     const auto one = [&](const ex& term) {
+        ++count;
         gaussian_term g;
         g.c = 1;
         g.Q = 0;
@@ -306,16 +353,19 @@ decay decay_of(const ex& h, const GiNaC::symbol& t, int sign) {
         if (!evaluate_numeric(re_of(g.Q.coeff(t, m)), 30, lead) || !lead.is_real()) return false;
         // the leading part of Re Q at sign*oo: lead * sign^m * |t|^m, negative needed
         const bool negative = (m % 2 == 0 || sign > 0) ? lead.is_negative() : lead.is_positive();
+        const bool positive = (m % 2 == 0 || sign > 0) ? lead.is_positive() : lead.is_negative();
+        if (positive) ++growing;
         if (!negative) return false;
         terms.push_back(g);
         return true;
     };
-    bool all = true;
+    bool all = true;  // every term looked at: `grows` needs all of them
     if (GiNaC::is_a<GiNaC::add>(e))
-        for (std::size_t i = 0; i < e.nops() && all; ++i) all = one(e.op(i));
+        for (std::size_t i = 0; i < e.nops(); ++i) all = one(e.op(i)) && all;
     else
         all = one(e);
     out.ok = all && !terms.empty();
+    out.grows = count > 0 && growing == count;
     out.terms = terms;
     return out;
 }
@@ -362,6 +412,11 @@ quadrature_result quadrature(const algebra_ptr& A, const coeffs& d, const ex& h,
     how.precision(3);
     const auto cut = [&](int sign, double from) {
         const decay D = decay_of(h, t, sign);
+        if (D.grows)
+            throw domain_error("transform: the integral of " + message_text(h, text_limit::report) + " diverges at " +
+                               std::string(sign > 0 ? "+oo" : "-oo") +
+                               ": the signal grows like e^(a |t|^m) with m >= 2 and a > 0 there, faster than e^(-d t) "
+                               "falls for any d");
         if (!D.ok)
             throw domain_error("transform: cannot decide whether the integral of " + message_text(h, text_limit::report) +
                                " converges at " + std::string(sign > 0 ? "+oo" : "-oo") +
