@@ -96,7 +96,7 @@ value builtin_hypercomplex_conjugate(const builtin& b, const std::vector<value>&
 value builtin_inverse_transform(const builtin& b, const std::vector<value>& a, context&) {
     const element& T = arg_element(a, 0, b);
     const element& d = arg_element(a, 1, b);
-    if (T.parent_ptr() != d.parent_ptr()) throw type_error(b.name + ": T and d belong to different algebras");
+    if (T.parent().name() != d.parent().name()) throw type_error(b.name + ": T and d belong to different algebras");
     const auto r = transforms::inverse_transform(T.parent_ptr(), T.coefficients(), d.coefficients(), arg_symbol(a, 2, b));
     return list{value(r.f), value(r.g), value(r.report)};
 }
@@ -104,7 +104,7 @@ value builtin_inverse_transform(const builtin& b, const std::vector<value>& a, c
 value builtin_monogenic(const builtin& b, const std::vector<value>& a, context&) {
     const element& F = arg_element(a, 0, b);
     const element& d = arg_element(a, 1, b);
-    if (F.parent_ptr() != d.parent_ptr()) throw type_error(b.name + ": F and d belong to different algebras");
+    if (F.parent().name() != d.parent().name()) throw type_error(b.name + ": F and d belong to different algebras");
     const auto r = transforms::monogenic(F.parent_ptr(), F.coefficients(), d.coefficients());
     if (r.holds == truth::unknown) throw domain_error(b.name + ": not decided: " + r.report);
     return list{value(r.holds == truth::yes), value(r.report)};
