@@ -152,7 +152,11 @@ void register_transforms_builtins(registry& r) {
          "the integral converges (Re r < Re mu for the exponents r of f and the eigenvalues mu of d), does not (the "
          "value is then the analytic continuation), or under which condition on the parameters. With g: the "
          "two-sided transform int_-oo^oo of the signal that is f for t >= 0 and g for t < 0 (V.2.11 over the whole "
-         "line): T f(d) + T[g(-u)](-d); e^(-|t|) is f = exp(-t), g = exp(t).",
+         "line): T f(d) + T[g(-u)](-d); e^(-|t|) is f = exp(-t), g = exp(t). Signals that are not quasi-polynomials: "
+         "impulses dirac(t - a, k) give d^k e^(-a d); pieces cut by step(alpha*t + beta) are exact (the shift of the "
+         "representation); a Gaussian on the whole line (g = f) is exact; anything else is integrated by quadrature "
+         "for numeric d, the report giving the error estimate. A divergent integral of such a signal is refused by "
+         "name; an undecided convergence says \"cannot decide\".",
          "(V.1.5, V.2.11, V.2.27-29, V.3)", "transform(exp(-t), t, 2*imag_unit(multicomplex(1), 0) + "
          "imag_unit(multicomplex(1), 1))", 3, 4, builtin_transform},
         {"dirac", "dirac(x [, k])",
