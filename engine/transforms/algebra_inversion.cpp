@@ -104,16 +104,23 @@ algebra_inverse inverse_transform(const algebra_ptr& A, const coeffs& T, const c
                 const ex raw = GiNaC::expand(inverse_laplace(sr.proper, s, t));
                 const auto one = [&](const ex& term) {
                     int side = 0;  // -1 causal, +1 anti-causal
+                    // the poles of the term named in sorted order (the message does not depend on GiNaC's)
+                    std::vector<std::string> names;
+                    for (const auto& e2 : signals::exponents_of(term, t))
+                        names.push_back(message_text(e2.lambda, text_limit::fragment));
+                    std::sort(names.begin(), names.end());
+                    std::string poles;
+                    for (const auto& nm : names) poles += (poles.empty() ? "" : ", ") + nm;
                     for (const auto& e2 : signals::exponents_of(term, t)) {
                         const ex re = tidy(GiNaC::real_part(e2.lambda.expand()));
                         GiNaC::numeric v;
                         if (!evaluate_numeric(re, 30, v) || !v.is_real())
-                            throw domain_error("inverse_transform: cannot decide the sign of the real part of the pole " +
-                                               message_text(e2.lambda, text_limit::report) +
+                            throw domain_error("inverse_transform: cannot decide the sign of the real part of the poles " +
+                                               poles +
                                                " (it says whether its term lies before or after t = 0)");
                         if (v.is_zero())
                             throw domain_error("inverse_transform: the component " + std::to_string(p) +
-                                               " has the pole " + message_text(e2.lambda, text_limit::report) +
+                                               " has the poles " + poles +
                                                " on the imaginary axis: it is not the Fourier transform of an L1 "
                                                "signal (V.2.36 needs f in L1)");
                         const int sd = v.is_negative() ? -1 : 1;

@@ -32,19 +32,20 @@ namespace {
 // An interval of t; an end is infinite or a real number.
 struct interval {
     bool lo_inf = false, hi_inf = true;
-    GiNaC::numeric lo = 0, hi = 0;
+    GiNaC::numeric lo = 0, hi = 0;  ///< the ends as numbers (for ordering and quadrature)
+    ex lo_x = 0, hi_x = 0;          ///< the same ends exactly (pi stays pi)
 };
 
 bool same(const interval& a, const interval& b) {
     return a.lo_inf == b.lo_inf && a.hi_inf == b.hi_inf && (a.lo_inf || a.lo == b.lo) && (a.hi_inf || a.hi == b.hi);
 }
 
-std::string end_text(bool inf, const GiNaC::numeric& x, bool upper) {
+std::string end_text(bool inf, const ex& x, bool upper) {
     return inf ? (upper ? "oo" : "-oo") : message_text(x, text_limit::fragment);
 }
 
 std::string interval_text(const interval& I) {
-    return "[" + end_text(I.lo_inf, I.lo, false) + ", " + end_text(I.hi_inf, I.hi, true) + "]";
+    return "[" + end_text(I.lo_inf, I.lo_x, false) + ", " + end_text(I.hi_inf, I.hi_x, true) + "]";
 }
 
 struct piece {
@@ -89,10 +90,11 @@ std::vector<piece> pieces_of(const ex& f, const GiNaC::symbol& t, const interval
             const GiNaC::numeric beta = real_number(arg.coeff(t, 0), x, "constant");
             if (alpha.is_zero()) throw domain_error("transform: step of a constant in " + message_text(term));
             const GiNaC::numeric b = -beta / alpha;
+            const ex bx = tidy(-arg.coeff(t, 0) / arg.coeff(t, 1));
             if (alpha.is_positive()) {
-                if (I.lo_inf || b > I.lo) I.lo = b, I.lo_inf = false;
+                if (I.lo_inf || b > I.lo) I.lo = b, I.lo_x = bx, I.lo_inf = false;
             } else {
-                if (I.hi_inf || b < I.hi) I.hi = b, I.hi_inf = false;
+                if (I.hi_inf || b < I.hi) I.hi = b, I.hi_x = bx, I.hi_inf = false;
             }
         }
         if (!I.lo_inf && !I.hi_inf && !(I.lo < I.hi)) return;  // an empty piece
@@ -109,25 +111,28 @@ std::vector<piece> pieces_of(const ex& f, const GiNaC::symbol& t, const interval
         one_term(e);
     // the partition of `base` by every end: on each cell the sum of the terms covering it (so that
     // 3 (1 - t/2) (1 - step(t - 2)) is 0 on [2, oo), not two divergent pieces), equal neighbours merged
-    std::vector<GiNaC::numeric> cuts;
+    using cut_t = std::pair<GiNaC::numeric, ex>;
+    std::vector<cut_t> cuts;
     for (const piece& p : out) {
-        if (!p.I.lo_inf) cuts.push_back(p.I.lo);
-        if (!p.I.hi_inf) cuts.push_back(p.I.hi);
+        if (!p.I.lo_inf) cuts.push_back({p.I.lo, p.I.lo_x});
+        if (!p.I.hi_inf) cuts.push_back({p.I.hi, p.I.hi_x});
     }
-    std::sort(cuts.begin(), cuts.end(), [](const GiNaC::numeric& a, const GiNaC::numeric& b) { return a < b; });
-    cuts.erase(std::unique(cuts.begin(), cuts.end(), [](const GiNaC::numeric& a, const GiNaC::numeric& b) { return a == b; }),
+    std::sort(cuts.begin(), cuts.end(), [](const cut_t& a, const cut_t& b) { return a.first < b.first; });
+    cuts.erase(std::unique(cuts.begin(), cuts.end(), [](const cut_t& a, const cut_t& b) { return a.first == b.first; }),
                cuts.end());
     std::vector<interval> cells;
     {
         interval c = base;
-        for (const GiNaC::numeric& x : cuts) {
-            if ((!c.lo_inf && !(x > c.lo)) || (!base.hi_inf && !(x < base.hi))) continue;
+        for (const cut_t& x : cuts) {
+            if ((!c.lo_inf && !(x.first > c.lo)) || (!base.hi_inf && !(x.first < base.hi))) continue;
             interval left = c;
             left.hi_inf = false;
-            left.hi = x;
+            left.hi = x.first;
+            left.hi_x = x.second;
             cells.push_back(left);
             c.lo_inf = false;
-            c.lo = x;
+            c.lo = x.first;
+            c.lo_x = x.second;
         }
         cells.push_back(c);
     }
@@ -147,6 +152,7 @@ std::vector<piece> pieces_of(const ex& f, const GiNaC::symbol& t, const interval
             is_zero_scalar(tidy(GiNaC::expand(merged.back().h - h)))) {
             merged.back().I.hi_inf = c.hi_inf;
             merged.back().I.hi = c.hi;
+            merged.back().I.hi_x = c.hi_x;
             continue;
         }
         merged.push_back({c, h});
@@ -185,7 +191,7 @@ coeffs tail_integral(const algebra_ptr& A, const coeffs& d, const ex& h, const G
 // int over [lo, hi] (lo finite) of h e^(-d t), exact; the convergence of an infinite upper end
 // decided (refused when it diverges), a condition kept in `conditions`.
 coeffs finite_start_integral(const algebra_ptr& A, const coeffs& d, const ex& h, const GiNaC::symbol& t,
-                             const GiNaC::numeric& lo, bool hi_inf, const GiNaC::numeric& hi, std::string& conditions,
+                             const ex& lo, bool hi_inf, const ex& hi, std::string& conditions,
                              truth& converges, const std::string& where) {
     coeffs v = tail_integral(A, d, h, t, lo);
     if (!hi_inf) return algebra::sub(v, tail_integral(A, d, h, t, hi));
@@ -476,9 +482,9 @@ piece_value integrate_piece(const algebra_ptr& A, const coeffs& d, const piece& 
     if (is_quasi_polynomial(P.h, t)) {
         try {
             if (!I.lo_inf) {
-                out.value = finite_start_integral(A, d, P.h, t, I.lo, I.hi_inf, I.hi, conditions, converges, where);
+                out.value = finite_start_integral(A, d, P.h, t, I.lo_x, I.hi_inf, I.hi_x, conditions, converges, where);
             } else if (!I.hi_inf) {  // int_-oo^b h(t) e^(-d t) dt = int_-b^oo h(-u) e^(d u) du
-                out.value = finite_start_integral(A, algebra::scale(-1, d), P.h.subs(t == -t), t, -I.hi, true, 0,
+                out.value = finite_start_integral(A, algebra::scale(-1, d), P.h.subs(t == -t), t, -I.hi_x, true, 0,
                                                   conditions, converges, where);
             } else {  // the whole line: split at 0
                 const coeffs r = finite_start_integral(A, d, P.h, t, 0, true, 0, conditions, converges, where);
