@@ -1083,3 +1083,45 @@ TEST(ExamplesTwoBody, PrintedResultsByValue) {
     EXPECT_NEAR(a, E, 1e-14 * std::abs(E));
     EXPECT_NEAR(b, E, 1e-11 * std::abs(E));
 }
+
+// examples/transforms.symrep, the Ch. V theory part (issue 29 item 5): the printed values against
+// independent ones (mpmath's quadrature at 30 digits for the ramp; exact forms otherwise).
+TEST(ExamplesTransforms, TheoryResultsByValue) {
+    const run_result& r = run_script("transforms.symrep");
+    ASSERT_EQ(r.status, 0) << r.err;
+    symbols S;
+    S("t");
+    S("eps");
+    S.table["I"] = GiNaC::I;
+    const GiNaC::realsymbol& eps = S.sym("eps");
+    // T delta'' = d^2 at d = 2 + eps
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "T dirac(t, 2) over sobrero(2) at 2 + eps =", "element")),
+                     GiNaC::pow(2 + eps, 2).expand()));
+    // the windowed ramp's components F(4 i), F(2 i) (tolerance: the reference's digits)
+    const auto W = split_list(result_after(r.out, "a windowed ramp 3 (1 - t/2) step(2 - t), exact: components F(4 i), F(2 i) =", "list"));
+    ASSERT_EQ(W.size(), 2u);
+    const ex w0 = GiNaC::evalf(parse(S, W[0])), w1 = GiNaC::evalf(parse(S, W[1]));
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::real_part(w0)).to_double(), 0.107390628169557518050, 1e-14);
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::imag_part(w0)).to_double(), -0.657247664379057958330, 1e-14);
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::real_part(w1)).to_double(), 0.620116357823854467990, 1e-14);
+    EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(GiNaC::imag_part(w1)).to_double(), -1.78380093574047309426, 1e-14);
+    // the Gaussian on the line: sqrt(pi)/2 (e^(-(W - 3)^2/4) + e^(-(W + 3)^2/4)) at W = 4, 2
+    const auto G = split_list(result_after(r.out, "two-sided exp(-t^2) cos 3t, exact (Gaussian integral): components "
+                                                  "sqrt(pi)/2 (e^(-(W-3)^2/4) + e^(-(W+3)^2/4)) =", "list"));
+    ASSERT_EQ(G.size(), 2u);
+    EXPECT_TRUE(same(parse(S, G[0]), GiNaC::sqrt(GiNaC::Pi) / 2 * (GiNaC::exp(ex(-1) / 4) + GiNaC::exp(ex(-49) / 4))));
+    EXPECT_TRUE(same(parse(S, G[1]), GiNaC::sqrt(GiNaC::Pi) / 2 * (GiNaC::exp(ex(-1) / 4) + GiNaC::exp(ex(-25) / 4))));
+    // Parseval: int_0^oo t e^(-t) e^(-t) sin 2t dt = Im 1/(2 - 2i)^2 = 1/8 on both sides
+    const auto P = split_list(result_after(r.out, "(Thm V.2.4, V.2.44-49) Parseval over multicomplex(1): [<f, g>, (1/2 pi "
+                                                  "i0) int_A T f (T g)^* dd, quadrature, report] =", "list"));
+    ASSERT_EQ(P.size(), 4u);
+    EXPECT_TRUE(same(parse(S, P[0]), ex(1) / 8));
+    EXPECT_TRUE(same(parse(S, P[1]), ex(1) / 8));
+    // the inversions give the signals back
+    const GiNaC::realsymbol& t = S.sym("t");
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(Thm V.2.3) the algebra-valued inversion: the components of T(d), "
+                                                  "d = u i0 + v i1, give back f =", "expression")),
+                     GiNaC::exp(-t) * GiNaC::cos(2 * t)));
+    EXPECT_TRUE(same(parse(S, result_after(r.out, "(Thm V.3.3) over sobrero(2), d = x + eps:", "expression")),
+                     t * GiNaC::exp(-t) * GiNaC::sin(t)));
+}

@@ -10,6 +10,11 @@
 #include "transforms/laplace.h"
 #include "transforms/inversion.h"
 #include "transforms/sampled.h"
+#include "transforms/algebra_inversion.h"
+#include "transforms/distribution.h"
+#include "transforms/monogenic.h"
+#include "transforms/parseval.h"
+#include "transforms/signal_transform.h"
 
 namespace symrep::lang {
 
@@ -57,9 +62,52 @@ value builtin_transform(const builtin& b, const std::vector<value>& a, context&)
     const GiNaC::symbol& t = arg_symbol(a, 1, b);
     const element& d = arg_element(a, 2, b);
     const auto x = a.size() > 3
-                       ? transforms::transform_two_sided(d.parent_ptr(), d.coefficients(), f, arg_ex(a, 3, b), t)
-                       : transforms::transform(d.parent_ptr(), d.coefficients(), f, t);
+                       ? transforms::transform_signal(d.parent_ptr(), d.coefficients(), f, t, &arg_ex(a, 3, b))
+                       : transforms::transform_signal(d.parent_ptr(), d.coefficients(), f, t);
     return list{value(element(d.parent_ptr(), x.value)), value(x.report)};
+}
+
+value builtin_dirac(const builtin& b, const std::vector<value>& a, context&) {
+    const GiNaC::ex k = a.size() > 1 ? GiNaC::ex(arg_int(a, 1, b, 0, 1000)) : GiNaC::ex(0);
+    return GiNaC::ex(transforms::dirac(arg_ex(a, 0, b), k));
+}
+
+value builtin_inner_product(const builtin& b, const std::vector<value>& a, context&) {
+    return transforms::inner_product(arg_ex(a, 0, b), arg_ex(a, 1, b), arg_symbol(a, 2, b));
+}
+
+value builtin_parseval(const builtin& b, const std::vector<value>& a, context&) {
+    const algebra_ptr& A = arg_algebra(a, 3, b);
+    const auto r = transforms::parseval(A, arg_ex(a, 0, b), arg_ex(a, 1, b), arg_symbol(a, 2, b));
+    if (r.proved != truth::yes) throw domain_error(b.name + ": " + r.report);
+    list out{value(r.time_side), value(element(A, r.element))};
+    if (r.has_quadrature)
+        out.push_back(value(list{value(GiNaC::ex(GiNaC::numeric(r.quadrature))),
+                                 value(GiNaC::ex(GiNaC::numeric(r.quadrature_error)))}));
+    out.push_back(value(r.report));
+    return out;
+}
+
+value builtin_hypercomplex_conjugate(const builtin& b, const std::vector<value>& a, context&) {
+    const element& x = arg_element(a, 0, b);
+    return element(x.parent_ptr(), transforms::hypercomplex_conjugate(x.parent_ptr(), x.coefficients()));
+}
+
+value builtin_inverse_transform(const builtin& b, const std::vector<value>& a, context&) {
+    const element& T = arg_element(a, 0, b);
+    const element& d = arg_element(a, 1, b);
+    if (T.parent().name() != d.parent().name()) throw type_error(b.name + ": T and d belong to different algebras");
+    const auto r = transforms::inverse_transform(T.parent_ptr(), T.coefficients(), d.coefficients(), arg_symbol(a, 2, b));
+    return list{value(r.f), value(r.g), value(r.report)};
+}
+
+value builtin_monogenic(const builtin& b, const std::vector<value>& a, context&) {
+    const element& F = arg_element(a, 0, b);
+    const element& d = arg_element(a, 1, b);
+    if (F.parent().name() != d.parent().name()) throw type_error(b.name + ": F and d belong to different algebras");
+    const auto r = transforms::monogenic(F.parent_ptr(), F.coefficients(), d.coefficients());
+    if (r.holds == truth::unknown) throw domain_error(b.name + ": not decided: " + r.report);
+    return list{value(r.holds == truth::yes), value(r.report)};
 }
 
 }  // namespace
@@ -104,9 +152,55 @@ void register_transforms_builtins(registry& r) {
          "the integral converges (Re r < Re mu for the exponents r of f and the eigenvalues mu of d), does not (the "
          "value is then the analytic continuation), or under which condition on the parameters. With g: the "
          "two-sided transform int_-oo^oo of the signal that is f for t >= 0 and g for t < 0 (V.2.11 over the whole "
-         "line): T f(d) + T[g(-u)](-d); e^(-|t|) is f = exp(-t), g = exp(t).",
+         "line): T f(d) + T[g(-u)](-d); e^(-|t|) is f = exp(-t), g = exp(t). Signals that are not quasi-polynomials: "
+         "impulses dirac(t - a, k) give d^k e^(-a d); pieces cut by step(alpha*t + beta) are exact (the shift of the "
+         "representation); a Gaussian on the whole line (g = f) is exact; anything else is integrated by quadrature "
+         "for numeric d, the report giving the error estimate. A divergent integral of such a signal is refused by "
+         "name; an undecided convergence says \"cannot decide\".",
          "(V.1.5, V.2.11, V.2.27-29, V.3)", "transform(exp(-t), t, 2*imag_unit(multicomplex(1), 0) + "
          "imag_unit(multicomplex(1), 1))", 3, 4, builtin_transform},
+        {"dirac", "dirac(x [, k])",
+         "The Dirac impulse delta^(k)(x) (k = 0 by default) as a signal term: c(t)*dirac(alpha*t + beta, k) with alpha "
+         "a nonzero number. diff(dirac(x, k), x) = dirac(x, k + 1); dirac(x) = 0 at a number x != 0. Its transform over "
+         "any algebra is T delta^(k)(t - a) = d^k e^(-a d): T delta = 1 and T delta^(k) = d^k, the powers of the "
+         "representation operator (V.2.32-35, V.3.33-36).",
+         "(V.2.32-35, V.3.33-36)", "transform(dirac(t, 2), t, 2 + basis(sobrero(1), 1))", 1, 2, builtin_dirac},
+        {"inner_product", "inner_product(f, g, t)",
+         "The inner product int_0^oo f(t) g(t) dt of two causal quasi-polynomials, exact: L[f g](0). An error names a "
+         "divergent integral (f g has an exponent with real part >= 0) or says that convergence cannot be decided.",
+         "(V.2.43-46)", "inner_product(exp(-t), exp(-2*t)*cos(t), t)", 3, 3, builtin_inner_product},
+        {"parseval", "parseval(f, g, t, M)",
+         "The hypercomplex Parseval relation over M = multicomplex(n) for causal quasi-polynomials f, g in L2 (V.2.44-49): "
+         "[int_0^oo f g dt, (1/2 pi i0) int_A T f (T g)^* dd, [the frequency integral by quadrature, its error "
+         "estimate] (numeric data only), report]. Proved: the frequency side (1/2 pi) int F(i w) conj G(i w) dw by "
+         "residues equals the time side; (T g)^* = T g(-d); the components of T f (T g)^* are F(i Omega_p) "
+         "conj G(i Omega_p), so the algebra integral is the inner product times the unit. The conjugate of V.2.41 is "
+         "read in the idempotent basis B* (hypercomplex_conjugate). parseval(f, f, t, M) is the energy (V.2.49).",
+         "Thm V.2.4, (V.2.44-49)", "parseval(exp(-t), exp(-2*t), t, multicomplex(1))", 4, 4, builtin_parseval},
+        {"hypercomplex_conjugate", "hypercomplex_conjugate(x)",
+         "The conjugate of V.2.40-41 of a multicomplex element: the complex conjugate of every idempotent component "
+         "(V.2.41 read in the basis B* = {e_p, i0 e_p}); in the basis of products of i0..in every generator changes "
+         "sign, i_k -> -i_k. For a real signal (T f)^* = T f(-d).",
+         "(V.2.40-41)", "hypercomplex_conjugate(1 + 2*imag_unit(multicomplex(1), 0) + 3*imag_unit(multicomplex(1), 0)*"
+         "imag_unit(multicomplex(1), 1))", 1, 1, builtin_hypercomplex_conjugate},
+        {"inverse_transform", "inverse_transform(T, d, t)",
+         "The inversion of an algebra-valued transform T(d) (Thm V.2.3, Thm V.3.3), d the algebra variable with symbols. "
+         "Over multicomplex(n) (d = w0*i0 + ... + wn*in): every idempotent component is a function F(i Omega_p) (checked), "
+         "inverted along the imaginary axis (poles left: the signal for t >= 0; right: for t < 0; a polynomial part: "
+         "impulses dirac(t, k)); all components give the same signal (V.2.39). Over sobrero(n) (d = x + eps): the eps^0 "
+         "coefficient is inverted and L^-1 of the eps^k coefficient checked to be (-t)^k f/k! (V.3.40-41). Returns "
+         "[f for t >= 0, g for t < 0, report].",
+         "Thm V.2.3, Thm V.3.3", "inverse_transform(transform(exp(-t), t, w*imag_unit(multicomplex(0), 0))[0], "
+         "w*imag_unit(multicomplex(0), 0), t)", 3, 3, builtin_inverse_transform},
+        {"monogenic", "monogenic(F, d)",
+         "Whether F, an element whose coordinates are functions of the symbols of d (d affine in them), is monogenic in "
+         "d: the generalized Cauchy-Riemann conditions b_r dF/dx = b_x dF/dr (b_x = dd/dx, r the first symbol with b_r "
+         "invertible), e.g. i0 dF/domega_k = i_k dF/domega_0 over multicomplex(n) (V.2.21), j dF/dx = dF/dw over "
+         "sobrero(n) (V.3.19). Each coordinate is proved 0 or shown nonzero at a point: [true/false, report]; an "
+         "error when a condition is not decided.",
+         "Thm V.2.1 (V.2.18-21), Thm V.3.1 (V.3.19)", "monogenic(transform(exp(-t), t, u*imag_unit(multicomplex(1), 0) + "
+         "v*imag_unit(multicomplex(1), 1))[0], u*imag_unit(multicomplex(1), 0) + v*imag_unit(multicomplex(1), 1))",
+         2, 2, builtin_monogenic},
     });
 }
 

@@ -71,9 +71,8 @@ bool hurwitz_stable(const std::vector<GiNaC::numeric>& D) {
     return true;
 }
 
-}  // namespace
-
-inversion_value fourier_inversion(const GiNaC::ex& F, const GiNaC::symbol& s, double t0) {
+// F as numeric polynomials N/D, proper and stable (the checks of fourier_inversion).
+std::pair<std::vector<double>, std::vector<double>> stable_proper(const GiNaC::ex& F, const GiNaC::symbol& s) {
     const GiNaC::ex nd = GiNaC::normal(F).numer_denom();
     const std::vector<GiNaC::numeric> Nx = coefficients(nd.op(0), s, "numerator"),
                                       Dx = coefficients(nd.op(1), s, "denominator");
@@ -83,7 +82,14 @@ inversion_value fourier_inversion(const GiNaC::ex& F, const GiNaC::symbol& s, do
     if (!hurwitz_stable(Dx))
         throw domain_error("fourier_inversion: the transform has a pole with real part >= 0 (Routh-Hurwitz): the "
                            "signal does not decay, its Fourier transform is not F(i w) and (V.2.36) does not apply");
-    const std::vector<double> N = doubles(Nx), D = doubles(Dx);
+    return {doubles(Nx), doubles(Dx)};
+}
+
+}  // namespace
+
+inversion_value fourier_inversion(const GiNaC::ex& F, const GiNaC::symbol& s, double t0) {
+    const auto ND = stable_proper(F, s);
+    const std::vector<double>&N = ND.first, &D = ND.second;
     const auto Fiw = [&](double w) { return horner(N, {0, w}) / horner(D, {0, w}); };
     inversion_value out;
     if (t0 == 0) {  // f~(0) = (1/pi) int_0^oo Re F(i w) dw (Ooura's sine/cosine need a frequency > 0)
@@ -102,6 +108,22 @@ inversion_value fourier_inversion(const GiNaC::ex& F, const GiNaC::symbol& s, do
     // sin(w t0) = sign(t0) sin(w |t0|)
     out.value = (c.first - (t0 > 0 ? 1 : -1) * sn.first) / std::numbers::pi;
     out.error_estimate = (c.second + sn.second) / std::numbers::pi;
+    return out;
+}
+
+inversion_value parseval_integral(const GiNaC::ex& F, const GiNaC::ex& G, const GiNaC::symbol& s) {
+    const auto PF = stable_proper(F, s), PG = stable_proper(G, s);
+    const std::vector<double>&NF = PF.first, &DF = PF.second, &NG = PG.first, &DG = PG.second;
+    const auto at = [&](double w) {
+        const std::complex<double> z(0, w);
+        return (horner(NF, z) / horner(DF, z) * std::conj(horner(NG, z) / horner(DG, z))).real();
+    };
+    boost::math::quadrature::exp_sinh<double> half_line;
+    double err = 0;
+    const double I = half_line.integrate(at, 1e-12, &err);
+    inversion_value out;
+    out.value = I / std::numbers::pi;
+    out.error_estimate = err / std::numbers::pi;
     return out;
 }
 

@@ -26,4 +26,10 @@ struct inversion_value {
 /// transform does not converge on the imaginary axis: the integral is not the inverse there).
 inversion_value fourier_inversion(const GiNaC::ex& F, const GiNaC::symbol& s, double t0);
 
+/// (V.2.42-44, the frequency side) (1/2 pi) int_R F(i w) conj G(i w) dw = (1/pi) int_0^oo
+/// Re[F(i w) conj G(i w)] dw (F, G transforms of real signals) by exp-sinh quadrature, for F, G
+/// proper with numeric coefficients and poles left of the axis (refused as fourier_inversion
+/// refuses).
+inversion_value parseval_integral(const GiNaC::ex& F, const GiNaC::ex& G, const GiNaC::symbol& s);
+
 }  // namespace symrep::transforms

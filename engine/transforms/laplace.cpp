@@ -176,11 +176,15 @@ ex inverse_laplace(const ex& F, const GiNaC::symbol& s, const GiNaC::symbol& t) 
     return f;
 }
 
-ex energy(const ex& f, const GiNaC::symbol& t) {
-    const ex f2 = tidy(GiNaC::expand(f * f));
+namespace {
+
+// int_0^oo g(t) dt = L[g](0) for a quasi-polynomial g = f1 f2 (`what` names the function and
+// `name` the integrand in the messages): each exponent's real part shown negative, else divergent
+// or undecided (said, never assumed); the first offender by printed form, so the message does not
+// depend on GiNaC's term order
+ex integral_of_product(const ex& g, const GiNaC::symbol& t, const std::string& what, const std::string& name) {
+    const ex f2 = tidy(GiNaC::expand(g));
     if (f2.is_zero()) return 0;
-    // each exponent's real part shown negative, else divergent or undecided (said, never assumed);
-    // the first offender by printed form, so the message does not depend on GiNaC's term order
     std::string bad, undecided;
     for (const auto& e : signals::exponents_of(f2, t)) {
         const ex re = real_part_of(e.lambda);
@@ -193,13 +197,22 @@ ex energy(const ex& f, const GiNaC::symbol& t) {
         if (slot.empty() || x < slot) slot = x;
     }
     if (!bad.empty())
-        throw domain_error("energy: the integral of f^2 diverges (f^2 has the exponent " + bad +
+        throw domain_error(what + ": the integral of " + name + " diverges (" + name + " has the exponent " + bad +
                            ", whose real part is not negative)");
     if (!undecided.empty())
-        throw domain_error("energy: cannot decide whether the integral of f^2 converges: the exponent " + undecided +
-                           " of f^2 is not shown to have a negative real part (declare the parameters positive)");
+        throw domain_error(what + ": cannot decide whether the integral of " + name + " converges: the exponent " +
+                           undecided + " of " + name +
+                           " is not shown to have a negative real part (declare the parameters positive)");
     const GiNaC::symbol s("s");
     return tidy(laplace_raw(f2, t, s).subs(s == 0));
+}
+
+}  // namespace
+
+ex energy(const ex& f, const GiNaC::symbol& t) { return integral_of_product(f * f, t, "energy", "f^2"); }
+
+ex inner_product(const ex& f1, const ex& f2, const GiNaC::symbol& t) {
+    return integral_of_product(f1 * f2, t, "inner_product", "f*g");
 }
 
 algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, const GiNaC::symbol& t) {
@@ -234,6 +247,14 @@ algebra_transform transform(const algebra_ptr& A, const coeffs& d, const ex& f, 
     }
     out.value = A->multiply(qd, inv);
     for (ex& x : out.value) x = tidy(x);
+    const algebra_transform c = convergence_of(A, d, f, t);
+    out.converges = c.converges;
+    out.report = c.report;
+    return out;
+}
+
+algebra_transform convergence_of(const algebra_ptr& A, const coeffs& d, const ex& f, const GiNaC::symbol& t) {
+    algebra_transform out;
     // convergence: Re r < Re mu for the exponents r of f and the eigenvalues mu of d (the
     // exponents of exp(d t)'s coordinates)
     std::vector<ex> mus;

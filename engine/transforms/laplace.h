@@ -50,6 +50,10 @@ GiNaC::ex inverse_laplace(const GiNaC::ex& F, const GiNaC::symbol& s, const GiNa
 /// part is not shown negative (symbolic parameters not declared positive): said, not assumed.
 GiNaC::ex energy(const GiNaC::ex& f, const GiNaC::symbol& t);
 
+/// (V.2.43-44) The inner product int_0^oo f(t) g(t) dt of two causal quasi-polynomials: L[f g](0),
+/// exact; refused as energy() is (divergent, or convergence not decided), naming f*g.
+GiNaC::ex inner_product(const GiNaC::ex& f, const GiNaC::ex& g, const GiNaC::symbol& t);
+
 /// T f(d) on d's algebra with the convergence decided: yes (every Re(r - mu) < 0 shown),
 /// no (some Re(r - mu) >= 0 shown: the integral diverges, the value is the analytic
 /// continuation), or unknown (symbolic parameters: the report states the condition).
@@ -59,6 +63,10 @@ struct algebra_transform {
     std::string report;
 };
 algebra_transform transform(const algebra_ptr& A, const coeffs& d, const GiNaC::ex& f, const GiNaC::symbol& t);
+
+/// The convergence decision of transform() alone (value left empty): Re r < Re mu for the
+/// exponents r of the quasi-polynomial f and the eigenvalues mu of d.
+algebra_transform convergence_of(const algebra_ptr& A, const coeffs& d, const GiNaC::ex& f, const GiNaC::symbol& t);
 
 /// (V.2.11 over the whole line) int_-oo^oo F(t) e^(-d t) dt for F = f on t >= 0 and g on t < 0
 /// (both quasi-polynomials): T f(d) + T[g(-u)](-d), the second part the causal transform of the
