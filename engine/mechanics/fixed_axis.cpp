@@ -11,6 +11,7 @@
 #include "mechanics/quasi_polynomial.h"
 #include "mechanics/turning_frame.h"
 #include "scalar/scalar.h"
+#include "scalar/rational_integral.h"
 #include "vector/vector.h"
 
 namespace symrep::mechanics {
@@ -145,6 +146,14 @@ ex inner_variable(const ex& c, const ex& t) {
     return inner.empty() ? c : c.subs(inner, GiNaC::subs_options::no_pattern);
 }
 
+// int_0^t f(tau) dtau: in closed form where f is rational in tau (scalar/rational_integral.h:
+// a/(1 + tau^2) gives a atan t), otherwise the integral object.
+ex integral_object(const ex& f, const ex& t) {
+    const ex& tau = integration_variable();
+    if (const auto R = definite_rational_integral(f, tau, t)) return *R;
+    return GiNaC::integral(tau, 0, t, f);
+}
+
 }  // namespace
 
 ex duhamel(const ex& G, const ex& c, const ex& t) {
@@ -165,7 +174,7 @@ ex duhamel(const ex& G, const ex& c, const ex& t) {
             else p->second += k;
         }
         ex out = 0;
-        for (const auto& [f, k] : parts) out += k * GiNaC::integral(tau, 0, t, f);
+        for (const auto& [f, k] : parts) out += k * integral_object(f, t);
         return out;
     }
 }
@@ -240,7 +249,7 @@ ex integral_in_t(const ex& v, const ex& t) {
             inside = 1;
             for (std::size_t i = 0; i < r.nops(); ++i) (r.op(i).has(tau) ? inside : outside) *= r.op(i);
         }
-        return done + outside * GiNaC::integral(tau, 0, t, inside);
+        return done + outside * integral_object(inside, t);
     };
     ex out = 0;
     for (const vector_term& term : canonical_terms(v)) {
