@@ -218,7 +218,25 @@ TEST(RotationOperator, AdjointOfAPrecessionHasThePropertiesOfThmVI311) {
     test_session t;
     ASSERT_EQ(t.run("vector x, y\np := [sin(t), cos(t), 1]\nA := F_adjoint(p, x)\nexpect(A . A == x . x)\n"
                     "expect(F_adjoint(p, x x y) == A x F_adjoint(p, y))\nexpect(F(-p, A) == x)\n"
-                    "vector q(t)\nexpect(diff(F_adjoint(p, q), t) == F_adjoint(p, q' + p x q))"),
+                    "vector q(t)\nexpect(diff(F_adjoint(p, q), t) == F_adjoint(p, q' + p x q))\n"
+                    // 3: the second derivative rule; 5: the initial value
+                    "expect(diff(F_adjoint(p, q), t, 2) == F_adjoint(p, q'' + 2*p x q' + p x (p x q) + p' x q))\n"
+                    "expect(subs(F_adjoint(p, x), t = 0) == x)"),
+              0)
+        << t.err.str();
+}
+
+// The same properties for a fixed direction at a variable rate with a literal axis,
+// w = (1 + cos t) [0, 0, 1]: the angle -(t + sin t) and t + sin t are one variable of the
+// zero test (cos(-t - sin t) cos(t + sin t) - sin(-t - sin t) sin(t + sin t) = 1 is proved).
+TEST(RotationOperator, AdjointOfAFixedDirectionAtAVariableRate) {
+    test_session t;
+    ASSERT_EQ(t.run("vector x, y, q(t)\nw := (1 + cos(t))*[0, 0, 1]\nA := F_adjoint(w, x)\n"
+                    "expect(A . A == x . x)\nexpect(F(-w, A) == x)\nexpect(subs(A, t = 0) == x)\n"
+                    "expect(F_adjoint(w, x x y) == A x F_adjoint(w, y))\n"
+                    "expect(diff(F_adjoint(w, q), t) == F_adjoint(w, q' + w x q))\n"
+                    "expect(diff(F_adjoint(w, q), t, 2) == F_adjoint(w, q'' + 2*w x q' + w x (w x q) + w' x q))\n"
+                    "expect(cos(-t - sin(t))*cos(t + sin(t)) - sin(-t - sin(t))*sin(t + sin(t)) == 1)"),
               0)
         << t.err.str();
 }

@@ -450,6 +450,11 @@ std::optional<GiNaC::ex> composite_trig_arguments_as_symbols(const GiNaC::ex& y)
                 k = A.op(A.nops() - 1);
                 B = A / k;
             }
+            // B and -B are one variable: cos(-t - sin t) meets cos(t + sin t)
+            if (const GiNaC::ex nB = GiNaC::expand(-B); nB.compare(B) < 0) {
+                B = nB;
+                k = -k;
+            }
             GiNaC::lst syms;
             bool polynomial = true;
             for (auto it = B.preorder_begin(); it != B.preorder_end(); ++it) {
