@@ -299,14 +299,27 @@ value builtin_rotation_operator(const builtin& b, const args_t& a, context&) {
     return value(c(0) * x + c(1) * cross(w, x) + c(2) * cross(w, cross(w, x)));
 }
 
-value builtin_F(const builtin& b, const args_t& a, context& c) {
-    const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
-    if (w.is_zero() || x.is_zero() || equal(w, 0)) return value(x);
+// The operands w, x of F(w, x) and F_adjoint(w, x) and the time t, w required to have a value at
+// t = 0; `identity` when the operator leaves x as it is (w = 0 or x = 0).
+struct rotation_operands {
+    ex w, x, t;
+    bool identity = false;
+};
+rotation_operands read_rotation_operands(const builtin& b, const args_t& a, context& c) {
+    rotation_operands o{vector_arg(a, 0, b), vector_arg(a, 1, b), c.symbol("t")};
+    o.identity = o.w.is_zero() || o.x.is_zero() || equal(o.w, 0);
+    if (o.identity) return o;
     try {
-        mechanics::require_value_at_zero(w, t, "w(t)");
+        mechanics::require_value_at_zero(o.w, o.t, "w(t)");
     } catch (const domain_error& e) {
         throw domain_error(b.name + ": " + e.what());
     }
+    return o;
+}
+
+value builtin_F(const builtin& b, const args_t& a, context& c) {
+    const auto [w, x, t, identity] = read_rotation_operands(b, a, c);
+    if (identity) return value(x);
     // F_w = F_(-v) with v = -w, the Q of v (turning_frame.h): closed for a fixed direction
     // (a constant w too; VI.2.12, the angle an integral object when not elementary) and for
     // a regular precession
@@ -646,13 +659,8 @@ value builtin_planar(const builtin& b, const args_t& a, context& c) {
 }
 
 value builtin_F_adjoint(const builtin& b, const args_t& a, context& c) {
-    const ex w = vector_arg(a, 0, b), x = vector_arg(a, 1, b), t = c.symbol("t");
-    if (w.is_zero() || x.is_zero() || equal(w, 0)) return value(x);
-    try {
-        mechanics::require_value_at_zero(w, t, "w(t)");
-    } catch (const domain_error& e) {
-        throw domain_error(b.name + ": " + e.what());
-    }
+    const auto [w, x, t, identity] = read_rotation_operands(b, a, c);
+    if (identity) return value(x);
     const auto y = mechanics::rotated_adjoint(w, x, t);
     if (!y)
         throw domain_error(b.name + ": w(t) = " + print_ex(w) + " turns and Q has no closed form: F*_w(x) = Q^T x is "

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
@@ -229,30 +230,38 @@ struct gaussian_term {
     ex c, Q;
     unsigned k = 0;
 };
+// The term c t^k e^(Q(t)) (Q expanded; exp(x)^n read as e^(n x)); nothing when the term is
+// not of this form.
+std::optional<gaussian_term> read_gaussian_term(const ex& term, const GiNaC::symbol& t) {
+    gaussian_term g;
+    g.c = 1;
+    g.Q = 0;
+    const bool product = GiNaC::is_a<GiNaC::mul>(term);
+    for (std::size_t i = 0, n = product ? term.nops() : 1; i < n; ++i) {
+        const ex x = product ? term.op(i) : term;
+        if (!x.has(t)) g.c *= x;
+        else if (x.is_equal(t)) g.k += 1;
+        else if (GiNaC::is_a<GiNaC::power>(x) && x.op(0).is_equal(t) && x.op(1).info(GiNaC::info_flags::posint))
+            g.k += unsigned(GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int());
+        else if (is_ex_the_function(x, GiNaC::exp))
+            g.Q += x.op(0);
+        else if (GiNaC::is_a<GiNaC::power>(x) && is_ex_the_function(x.op(0), GiNaC::exp) &&
+                 x.op(1).info(GiNaC::info_flags::integer))
+            g.Q += x.op(1) * x.op(0).op(0);
+        else
+            return std::nullopt;
+    }
+    g.Q = GiNaC::expand(g.Q);
+    if (!g.Q.is_polynomial(t)) return std::nullopt;
+    return g;
+}
+
 bool gaussian_terms(const ex& h, const GiNaC::symbol& t, std::vector<gaussian_term>& out) {
     const ex e = exponential_form(h);
     const auto one = [&](const ex& term) {
-        gaussian_term g;
-        g.c = 1;
-        g.Q = 0;
-        const bool product = GiNaC::is_a<GiNaC::mul>(term);
-        for (std::size_t i = 0, n = product ? term.nops() : 1; i < n; ++i) {
-            const ex x = product ? term.op(i) : term;
-            if (!x.has(t)) g.c *= x;
-            else if (x.is_equal(t)) g.k += 1;
-            else if (GiNaC::is_a<GiNaC::power>(x) && x.op(0).is_equal(t) && x.op(1).info(GiNaC::info_flags::posint))
-                g.k += unsigned(GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int());
-            else if (is_ex_the_function(x, GiNaC::exp))
-                g.Q += x.op(0);
-            else if (GiNaC::is_a<GiNaC::power>(x) && is_ex_the_function(x.op(0), GiNaC::exp) &&
-                     x.op(1).info(GiNaC::info_flags::integer))
-                g.Q += x.op(1) * x.op(0).op(0);
-            else
-                return false;
-        }
-        g.Q = GiNaC::expand(g.Q);
-        if (!g.Q.is_polynomial(t) || g.Q.degree(t) != 2) return false;
-        out.push_back(g);
+        const auto g = read_gaussian_term(term, t);
+        if (!g || g->Q.degree(t) != 2) return false;
+        out.push_back(*g);
         return true;
     };
     if (GiNaC::is_a<GiNaC::add>(e)) {
@@ -295,9 +304,9 @@ coeffs gaussian_integral(const algebra_ptr& A, const coeffs& d, const std::vecto
                 if (is_ex_the_function(x, GiNaC::exp)) arg += x.op(0);
                 else rest *= x;
             }
-            const ex rr = re_of(rest), ri = im_of(rest), A = re_of(arg), B = im_of(arg);
-            out_re += GiNaC::exp(A) * (rr * GiNaC::cos(B) - ri * GiNaC::sin(B));
-            out_im += GiNaC::exp(A) * (rr * GiNaC::sin(B) + ri * GiNaC::cos(B));
+            const ex rr = re_of(rest), ri = im_of(rest), Re = re_of(arg), Im = im_of(arg);
+            out_re += GiNaC::exp(Re) * (rr * GiNaC::cos(Im) - ri * GiNaC::sin(Im));
+            out_im += GiNaC::exp(Re) * (rr * GiNaC::sin(Im) + ri * GiNaC::cos(Im));
         };
         if (GiNaC::is_a<GiNaC::add>(g))
             for (std::size_t i = 0; i < g.nops(); ++i) one(g.op(i));
@@ -338,21 +347,9 @@ decay decay_of(const ex& h, const GiNaC::symbol& t, int sign) {
     std::size_t growing = 0, count = 0;
     const auto one = [&](const ex& term) {
         ++count;
-        gaussian_term g;
-        g.c = 1;
-        g.Q = 0;
-        const bool product = GiNaC::is_a<GiNaC::mul>(term);
-        for (std::size_t i = 0, n = product ? term.nops() : 1; i < n; ++i) {
-            const ex x = product ? term.op(i) : term;
-            if (!x.has(t)) g.c *= x;
-            else if (x.is_equal(t)) g.k += 1;
-            else if (GiNaC::is_a<GiNaC::power>(x) && x.op(0).is_equal(t) && x.op(1).info(GiNaC::info_flags::posint))
-                g.k += unsigned(GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int());
-            else if (is_ex_the_function(x, GiNaC::exp)) g.Q += x.op(0);
-            else return false;
-        }
-        g.Q = GiNaC::expand(g.Q);
-        if (!g.Q.is_polynomial(t)) return false;
+        const auto read = read_gaussian_term(term, t);
+        if (!read) return false;
+        const gaussian_term& g = *read;
         const int m = g.Q.degree(t);
         if (m < 2) return false;
         GiNaC::numeric lead;
