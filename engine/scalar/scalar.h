@@ -117,6 +117,9 @@ inline bool is_zero_scalar(double x, double tol = 0.0) { return std::abs(x) <= t
 /// constants such as pi and expressions made of them.
 bool has_symbol(const GiNaC::ex& x);
 
+/// The distinct symbols of the expressions xs, sorted by name (a deterministic order).
+std::vector<GiNaC::ex> symbols_by_name(const std::vector<GiNaC::ex>& xs);
+
 /// A term (a product, or a single factor) split as c rest: c the product of its numeric
 /// factors, rest the product of the others in their order (1 when there are none).
 std::pair<GiNaC::numeric, GiNaC::ex> split_numeric_factor(const GiNaC::ex& term);

@@ -59,6 +59,19 @@ bool has_symbol(const GiNaC::ex& x) {
     return false;
 }
 
+std::vector<GiNaC::ex> symbols_by_name(const std::vector<GiNaC::ex>& xs) {
+    std::vector<GiNaC::ex> out;
+    for (const GiNaC::ex& x : xs)
+        for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+                std::none_of(out.begin(), out.end(), [&](const GiNaC::ex& o) { return o.is_equal(*it); }))
+                out.push_back(*it);
+    std::sort(out.begin(), out.end(), [](const GiNaC::ex& a, const GiNaC::ex& b) {
+        return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name();
+    });
+    return out;
+}
+
 std::pair<GiNaC::numeric, GiNaC::ex> split_numeric_factor(const GiNaC::ex& term) {
     GiNaC::numeric c = 1;
     GiNaC::ex rest = 1;

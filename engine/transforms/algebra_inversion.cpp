@@ -24,17 +24,6 @@ bool proved_zero(const ex& x) {
     return decide_zero(y).is_zero == truth::yes;
 }
 
-std::vector<ex> symbols_of(const coeffs& d) {
-    std::vector<ex> out;
-    for (const ex& x : d)
-        for (GiNaC::const_preorder_iterator i = x.preorder_begin(); i != x.preorder_end(); ++i)
-            if (GiNaC::is_a<GiNaC::symbol>(*i)) {
-                if (std::none_of(out.begin(), out.end(), [&](const ex& o) { return o.is_equal(*i); }))
-                    out.push_back(*i);
-            }
-    std::sort(out.begin(), out.end(), [](const ex& a, const ex& b) { return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name(); });
-    return out;
-}
 
 // F(s) = P(s) + R(s): P the polynomial part (impulses sum c_k dirac(t, k)), R proper.
 struct split_rational {
@@ -64,7 +53,7 @@ algebra_inverse inverse_transform(const algebra_ptr& A, const coeffs& T, const c
     A->check_size(d, "inverse_transform");
     const GiNaC::symbol s("s");
     algebra_inverse out;
-    const std::vector<ex> vars = symbols_of(d);
+    const std::vector<ex> vars = symbols_by_name(d);
     if (vars.empty())
         throw domain_error("inverse_transform: d has no symbol; the transform must be given as a function of the "
                            "algebra variable d (e.g. d = w0*i0 + w1*i1 over multicomplex(1), d = x + eps over sobrero(n))");

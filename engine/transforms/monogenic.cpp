@@ -30,14 +30,7 @@ std::string element_text(const algebra_ptr& A, const coeffs& b) {
 monogenicity monogenic(const algebra_ptr& A, const coeffs& F, const coeffs& d) {
     A->check_size(F, "monogenic");
     A->check_size(d, "monogenic");
-    std::vector<ex> vars;
-    for (const ex& x : d)
-        for (GiNaC::const_preorder_iterator i = x.preorder_begin(); i != x.preorder_end(); ++i)
-            if (GiNaC::is_a<GiNaC::symbol>(*i)) {
-                if (std::none_of(vars.begin(), vars.end(), [&](const ex& o) { return o.is_equal(*i); }))
-                    vars.push_back(*i);
-            }
-    std::sort(vars.begin(), vars.end(), [](const ex& a, const ex& b) { return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name(); });
+    const std::vector<ex> vars = symbols_by_name(d);
     if (vars.empty()) throw domain_error("monogenic: the variable d has no symbol (write d = omega0*i0 + ... with symbols)");
     std::vector<coeffs> dirs;
     for (const auto& v : vars) {
