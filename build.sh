@@ -41,9 +41,13 @@ deps() {
     apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
+# build [TARGET...]: configure and build the named targets (default: all of them: the program,
+# the tests, the benchmarks and the Python module). The main job builds only the program.
 build() {
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
-    cmake --build "$BUILD_DIR" -j"$JOBS"
+    local targets=()
+    for t in "$@"; do targets+=(--target "$t"); done
+    cmake --build "$BUILD_DIR" -j"$JOBS" "${targets[@]}"
 }
 
 # The robustness test (tests/test_robustness.cpp; docs/testing.md) built with
@@ -59,7 +63,7 @@ sanitized_robustness() {
 case "${1:-}" in
     deps)  deps ;;
     build) deps; build ;;
-    main)  deps; build; "$BUILD_DIR"/symrep "$MAIN_SCRIPT" ;;
+    main)  deps; build symrep; "$BUILD_DIR"/symrep "$MAIN_SCRIPT" ;;
     test)  deps; build; ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS"
            sanitized_robustness ;;
     fuzz)  deps; sanitized_robustness "${2:-100000}" ;;
