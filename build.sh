@@ -23,7 +23,11 @@ PACKAGES=(g++ make cmake pkg-config
           # the Python module, the Jupyter kernel and the Dask example (docs/python.md)
           pybind11-dev python3-dev python3-numpy python3-pytest python3-sympy
           python3-ipykernel python3-jupyter-client python3-nbformat python3-nbconvert
-          python3-dask python3-distributed)
+          python3-dask python3-distributed
+          # the notebooks in a browser: the `jupyter notebook` command, MathJax for the
+          # notebook and the exported HTML (offline), the browser test (tests/browser)
+          python3-notebook jupyter-notebook jupyter-nbconvert python3-nbclient libjs-mathjax
+          chromium chromium-driver python3-selenium)
 
 deps() {
     local missing=()
