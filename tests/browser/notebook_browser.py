@@ -17,7 +17,7 @@ libjs-mathjax, /usr/share/javascript/mathjax: no network needed; issue 32).
 
 A screenshot of the executed notebook is written to BUILD/notebook_foucault.png, and to
 docs/figures/notebook_foucault.png with SYMREP_WRITE_SCREENSHOT=1. Without chromium, chromedriver,
-Selenium or the notebook server the test is skipped (exit 77, ctest shows it as skipped).
+Selenium, the notebook server or MathJax the test is skipped (exit 77, ctest shows it as skipped).
 Run by hand: PYTHONPATH=build/python /usr/bin/python3 tests/browser/notebook_browser.py
 """
 import json
@@ -236,12 +236,13 @@ def main():
                       (CHROMEDRIVER, "chromedriver (Debian package chromium-driver)")):
         if not os.access(path, os.X_OK):
             skip(why)
-    try:
-        import notebook  # noqa: F401
-        import selenium  # noqa: F401
-        import symrep.kernel
-    except ImportError as e:
-        skip("%s (Debian packages python3-selenium, python3-notebook; the symrep module on PYTHONPATH)" % e)
+    import importlib.util
+
+    for module, package in (("selenium", "python3-selenium"), ("notebook", "python3-notebook"),
+                            ("nbconvert", "python3-nbconvert")):
+        if importlib.util.find_spec(module) is None:
+            skip("the Python module %s (Debian package %s)" % (module, package))
+    import symrep.kernel  # the build's module (PYTHONPATH=build/python): its absence is a failure
     if not os.path.exists("/usr/share/javascript/mathjax/MathJax.js"):
         skip("MathJax (Debian package libjs-mathjax)")
 
