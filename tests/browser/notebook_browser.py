@@ -10,7 +10,9 @@ cells with the symrep kernel and the page is checked as a reader sees it:
   - the LaTeX results and the markdown's formulas are typeset by MathJax (MathJax elements in
     every LaTeX output, no raw "$\\" source left in the page);
   - the trajectory is an inline image of non-trivial size;
-  - the code is highlighted by the kernel's CodeMirror mode (kernelspec/kernel.js).
+  - the code is highlighted by the kernel's CodeMirror mode (kernelspec/kernel.js);
+  - Tab in a new cell opens the completer with the engine's names, Shift-Tab the tooltip with
+    the builtin's help.
 The executed notebook is then exported with `jupyter nbconvert --to html` and opened from the
 file with the browser's network switched off: its formulas are typeset too (MathJax from Debian's
 libjs-mathjax, /usr/share/javascript/mathjax: no network needed; issue 32).
@@ -177,6 +179,40 @@ def check_notebook_page(driver):
           % (s["builtins"][:3], s["keywords"][:2]))
 
 
+def check_tab_and_shift_tab(driver):
+    """Tab opens the completer with the engine's names, Shift-Tab the tooltip with a builtin's help,
+    typed into a new cell (deleted afterwards)."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.keys import Keys
+
+    def type_into_new_cell(text):
+        driver.execute_script("""
+          var nb = Jupyter.notebook, c = nb.insert_cell_at_bottom("code");
+          nb.select(nb.ncells() - 1); nb.edit_mode();
+          c.set_text(arguments[0]); c.code_mirror.setCursor(0, arguments[0].length); c.code_mirror.focus();""",
+                              text)
+
+    def delete_new_cell():
+        ActionChains(driver).send_keys(Keys.ESCAPE).perform()
+        driver.execute_script("var nb = Jupyter.notebook; nb.command_mode(); nb.delete_cell(nb.ncells() - 1);")
+
+    type_into_new_cell("y := inver")
+    ActionChains(driver).send_keys(Keys.TAB).perform()
+    names = wait_for("the completer", lambda: driver.execute_script(
+        "return Array.from(document.querySelectorAll('.completions select option')).map(function (o) {"
+        " return o.value; });"), 20)
+    check("inverse" in names and "inverse_laplace" in names, "Tab completes from the engine: %s" % names[:4])
+    ActionChains(driver).send_keys(Keys.ESCAPE).perform()
+    delete_new_cell()
+    type_into_new_cell("inverse(w")
+    ActionChains(driver).key_down(Keys.SHIFT).send_keys(Keys.TAB).key_up(Keys.SHIFT).perform()
+    tip = wait_for("the tooltip", lambda: driver.execute_script(
+        "var t = document.getElementById('tooltip'); return t && t.offsetParent !== null &&"
+        " t.querySelector('.tooltiptext').innerText;"), 20)
+    check(tip.lstrip().startswith("inverse("), "Shift-Tab shows the help of inverse: %r" % tip[:40])
+    delete_new_cell()
+
+
 def screenshot(driver, path):
     # the whole notebook: the page scrolls inside #site, so the window is made as tall as the notebook
     driver.execute_script("Jupyter.notebook.get_selected_cell().unselect();"
@@ -264,6 +300,7 @@ def main():
         version = run_notebook(driver, port, "foucault.ipynb")
         check(version.startswith("2."), "the notebook's MathJax %s typeset the page" % version)
         check_notebook_page(driver)
+        check_tab_and_shift_tab(driver)
         driver.execute_script("Jupyter.notebook.save_notebook();")
         wait_for("the notebook to be saved", lambda: driver.execute_script(
             "return !Jupyter.notebook.dirty && Jupyter.notebook.last_modified !== undefined;"), 30)
@@ -277,7 +314,11 @@ def main():
             print("screenshot:", extra)
         saved = os.path.join(folder, "foucault.ipynb")
         with open(saved) as f:
-            outputs = [o for c in json.load(f)["cells"] for o in c.get("outputs", [])]
+            cells = json.load(f)["cells"]
+        with open(os.path.join(SOURCE_DIR, "examples", "notebooks", "foucault.ipynb")) as f:
+            check([c["source"] for c in cells] == [c["source"] for c in json.load(f)["cells"]],
+                  "the saved notebook has the cells of examples/notebooks/foucault.ipynb")
+        outputs = [o for c in cells for o in c.get("outputs", [])]
         check(any(o["output_type"] == "execute_result" for o in outputs), "the saved notebook has its results")
         check_exported_html(driver, saved)
     except BaseException:
