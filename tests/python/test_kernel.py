@@ -7,6 +7,7 @@ installed into a temporary JUPYTER_PATH by `symrep.kernel.install`, as
 import json
 import os
 import shutil
+import sys
 import time
 
 import nbformat
@@ -64,7 +65,7 @@ def test_the_kernel_spec_folder(tmp_path):
     with open(os.path.join(where, "kernel.json")) as f:
         installed = json.load(f)
     parent = os.path.dirname(os.path.dirname(os.path.abspath(symrep.kernel.__file__)))
-    assert installed == dict(spec, env={"PYTHONPATH": parent})
+    assert installed == dict(spec, argv=[sys.executable] + spec["argv"][1:], env={"PYTHONPATH": parent})
     # from site-packages: the folder as it is
     assert symrep.kernel.kernel_spec(build_tree=False) == spec
 

@@ -276,16 +276,17 @@ def in_site_packages():
 
 
 def kernel_spec(build_tree=None):
-    """The kernel.json of this installation: kernelspec/kernel.json, and for a package reached
-    through PYTHONPATH (the build tree, the tests) the folder of this package on the kernel's
-    PYTHONPATH. "python3" is the interpreter of the Jupyter server (jupyter_client puts
-    sys.executable there)."""
+    """The kernel.json of this installation: kernelspec/kernel.json ("python3" is the interpreter
+    of the Jupyter server: jupyter_client puts its sys.executable there), and for a package
+    reached through PYTHONPATH (the build tree, the tests) this interpreter, the one the
+    module was built for, with the folder of this package on the kernel's PYTHONPATH."""
     with open(os.path.join(SPEC_DIR, "kernel.json")) as f:
         spec = json.load(f)
     if build_tree is None:
         build_tree = not in_site_packages()
     if build_tree:
         package_parent = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+        spec["argv"][0] = sys.executable
         spec["env"] = {"PYTHONPATH": package_parent}
     return spec
 
