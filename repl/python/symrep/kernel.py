@@ -5,8 +5,8 @@
     python3 -m symrep.kernel kernel-js > symrep/kernelspec/kernel.js         # regenerate the mode
 
 A cell is run statement by statement as the interactive prompt runs it (a statement ends
-at the end of a line where no bracket or string is open: syntax/lexer.h), up to its first
-error, and each statement's output is sent as soon as it ran. A result is an
+at the end of a line where no bracket is open and no backslash continues it: syntax/lexer.h),
+up to its first error, and each statement's output is sent as soon as it ran. A result is an
 execute_result (Out[n]) as LaTeX (MathJax) with the canonical text as fallback; a picture
 written by plot, trajectory or hodograph is shown inline (display_data, PNG or SVG); an
 error is an `error` reply named by its Python class, with its line, column, the source line
@@ -48,7 +48,7 @@ ATOMS = ["true", "false", "pi", "I"]
 def statements(code):
     """The statements of a cell with the number of their first line, as the engine reads a
     stream (lang::session::run_stream): a statement ends at the end of a line where no
-    bracket or string is open and no backslash continues it. Blank runs are skipped."""
+    bracket is open and no backslash continues it. Blank runs are skipped."""
     pending, first = [], 1
     for n, line in enumerate(code.split("\n"), 1):
         if not pending:
