@@ -1,5 +1,5 @@
 """tests/python/test_notebooks.py -- examples/notebooks/signals.ipynb and identification.ipynb executed
-with nbclient and the symrep kernel (the build tree's spec in a temporary JUPYTER_PATH): no error
+together with nbclient and the symrep kernel (the build tree's spec in a temporary JUPYTER_PATH): no error
 cell, and a few results checked by another route (SymPy, or the numbers the thesis gives)."""
 import os
 import re
@@ -13,8 +13,14 @@ import sympy
 from conftest import SOURCE_DIR
 
 
+NOTEBOOKS = ("signals.ipynb", "identification.ipynb")
+
+
 @pytest.fixture(scope="module")
-def run_notebook(tmp_path_factory):
+def executed(tmp_path_factory):
+    """Both notebooks executed at once (each with its own kernel): name -> (results, images, folder)."""
+    import asyncio
+
     from nbclient import NotebookClient
 
     root = tmp_path_factory.mktemp("notebooks")
@@ -23,28 +29,37 @@ def run_notebook(tmp_path_factory):
     os.environ["JUPYTER_PATH"] = str(root / "share" / "jupyter")
     os.environ["JUPYTER_RUNTIME_DIR"] = str(root / "runtime")
     os.environ["JUPYTER_DATA_DIR"] = str(root / "data")
-
-    def run(name):
+    books = {}
+    for name in NOTEBOOKS:
         folder = root / name.split(".")[0]
         folder.mkdir()
         shutil.copy(os.path.join(SOURCE_DIR, "examples", "notebooks", name), folder / name)
-        nb = nbformat.read(str(folder / name), as_version=4)
-        NotebookClient(nb, timeout=300, kernel_name="symrep", resources={"metadata": {"path": str(folder)}}).execute()
+        books[name] = (nbformat.read(str(folder / name), as_version=4), folder)
+
+    async def run_all():
+        await asyncio.gather(*(NotebookClient(nb, timeout=300, kernel_name="symrep",
+                                              resources={"metadata": {"path": str(folder)}}).async_execute()
+                               for nb, folder in books.values()))
+
+    try:
+        asyncio.run(run_all())
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+    out = {}
+    for name, (nb, folder) in books.items():
         code = [c for c in nb.cells if c.cell_type == "code"]
-        assert all(c.execution_count for c in code)
+        assert all(c.execution_count for c in code), name
         outputs = [o for c in code for o in c.outputs]
         errors = [o for o in outputs if o.output_type == "error"]
         assert not errors, errors[0].traceback
         results = [o.data["text/plain"] for o in outputs if o.output_type == "execute_result"]
         images = [o for o in outputs if o.output_type == "display_data" and "image/png" in o.data]
-        return results, images, folder
-
-    yield run
-    for k, v in saved.items():
-        if v is None:
-            os.environ.pop(k, None)
-        else:
-            os.environ[k] = v
+        out[name] = (results, images, folder)
+    return out
 
 
 def expr(text, **names):
@@ -52,8 +67,8 @@ def expr(text, **names):
         "I": sympy.I, "pi": sympy.pi})
 
 
-def test_the_signals_notebook(run_notebook):
-    results, images, folder = run_notebook("signals.ipynb")
+def test_the_signals_notebook(executed):
+    results, images, folder = executed["signals.ipynb"]
     t, s, z, X = sympy.symbols("t s z X", real=True)
     # the least equation of f = e^-t (3 cos 2t + sin 2t): p(D) f = 0 (SymPy), p of degree 2
     f = sympy.exp(-t) * (3 * sympy.cos(2 * t) + sympy.sin(2 * t))
@@ -78,8 +93,8 @@ def test_the_signals_notebook(run_notebook):
     assert len(images) == 1 and (folder / "notch_gain.png").exists()
 
 
-def test_the_identification_notebook(run_notebook):
-    results, images, folder = run_notebook("identification.ipynb")
+def test_the_identification_notebook(executed):
+    results, images, folder = executed["identification.ipynb"]
     # Walsh coefficients of t^2 on [0, 1) in Paley's order: averages on the quarters (exact),
     # combined with the signs of w_1 = r_1, w_2 = r_2, w_3 = r_1 r_2
     blocks = [Fraction((k + 1) ** 3 - k ** 3, 48) for k in range(4)]
