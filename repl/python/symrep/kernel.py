@@ -20,6 +20,7 @@ import sys
 import tempfile
 
 import symrep
+import symrep.progress
 
 try:
     from ipykernel.kernelbase import Kernel
@@ -81,7 +82,8 @@ class SymrepKernel(Kernel):
                 else:
                     self._stream("stdout", text)
             return self._ok()
-        events = self.engine.run(code, "<cell>")
+        with symrep.progress.kernel_line(self):  # a long operation shows a progress line (progress.py)
+            events = self.engine.run(code, "<cell>")
         for kind, x in events:
             if silent and kind != "error":
                 continue
