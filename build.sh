@@ -23,7 +23,9 @@ PACKAGES=(g++ make cmake pkg-config
           # the Python module, the Jupyter kernel and the Dask example (docs/python.md)
           pybind11-dev python3-dev python3-numpy python3-pytest python3-sympy
           python3-ipykernel python3-jupyter-client python3-nbformat python3-nbconvert
-          python3-dask python3-distributed)
+          python3-dask python3-distributed
+          # progress: the tqdm bar (optional at run time) and script(1) for the terminal test (docs/progress.md)
+          python3-tqdm bsdutils)
 
 deps() {
     local missing=()
