@@ -27,7 +27,9 @@ PACKAGES=(g++ make cmake pkg-config
           # the notebooks in a browser: the `jupyter notebook` command, MathJax for the
           # notebook and the exported HTML (offline), the browser test (tests/browser)
           python3-notebook jupyter-notebook jupyter-nbconvert python3-nbclient libjs-mathjax
-          chromium chromium-driver python3-selenium)
+          chromium chromium-driver python3-selenium
+          # progress: the tqdm bar (optional at run time) and script(1) for the terminal test (docs/progress.md)
+          python3-tqdm bsdutils)
 
 deps() {
     local missing=()

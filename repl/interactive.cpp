@@ -293,6 +293,16 @@ bool command(session& s, const std::string& line, bool& quit) {
 
 }  // namespace
 
+std::unique_ptr<progress_scope> terminal_progress() {
+    double delay = 1.0;
+    if (const char* d = std::getenv("SYMREP_PROGRESS_DELAY")) {
+        char* end = nullptr;
+        const double v = std::strtod(d, &end);
+        if (end != d && *end == '\0' && v >= 0) delay = v;
+    }
+    return progress_on_terminal(STDERR_FILENO, delay);
+}
+
 int interactive(session& s) {
     g_session = &s;
     const bool colour = use_colour();

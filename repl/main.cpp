@@ -186,6 +186,7 @@ int main(int argc, char** argv) {
     symrep::set_vector_notation(unicode ? symrep::notation::unicode : symrep::notation::ascii);
     symrep::lang::session s(std::cout, std::cerr);
     s.options() = opts;
+    const auto progress = symrep::repl::terminal_progress();  // a progress line when stderr is a terminal
     if (jobs.empty()) {
         if (prompt) return interactive(s);
         s.run_stream(std::cin, "<stdin>");  // statement by statement: each answer as soon as it is ready

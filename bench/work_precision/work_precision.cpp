@@ -42,6 +42,9 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include "core/progress.h"
 #include "lang/interpreter.h"
 #include "lang/values.h"
 #include "numeric/evaluator.h"
@@ -478,6 +481,8 @@ void omega_sweep(const settings& s) {
     std::vector<std::pair<std::string, std::string>> lines;  // (method, row), written grouped by method
     const double T = 10;
     const int per_decade = s.quick ? 2 : 4;
+    progress_task task("omega sweep", 2.0 * (15 * per_decade + 1));
+    double done = 0;
     for (const problem_text* p : {&coriolis_problem, &centrifugal_problem}) {
         derived d = derive(*p);
         const char* id = p == &coriolis_problem ? "coriolis" : "centrifugal";
@@ -515,6 +520,7 @@ void omega_sweep(const settings& s) {
                     row(num::stepper_name(k), inf);
                 }
             }
+            task.report(++done);
         }
         std::stable_sort(lines.begin(), lines.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         for (const auto& l : lines) out.f << l.second;
@@ -560,7 +566,10 @@ void time_sweep(const settings& s) {
     const choice choices[] = {{num::stepper_kind::rk4, 0.5},       {num::stepper_kind::dopri5, 1e-7},
                               {num::stepper_kind::rkf78, 1e-10},   {num::stepper_kind::rkf78, 1e-13},
                               {num::stepper_kind::bulirsch_stoer, 1e-10}, {num::stepper_kind::bulirsch_stoer, 1e-13}};
+    progress_task task("time sweep", double(std::size(choices)));  // each integration its part
+    double done = 0;
     for (const choice& c : choices) {
+        task.report(done++);
         if (s.quick && c.tol_or_step < 1e-12) continue;
         num::integration_options o;
         o.stepper = c.k;
@@ -577,6 +586,7 @@ void time_sweep(const settings& s) {
             std::cerr << "time sweep " << num::stepper_name(c.k) << " " << c.tol_or_step << ": " << e.what() << "\n";
         }
     }
+    task.finish();
 }
 
 }  // namespace
@@ -601,6 +611,7 @@ int main(int argc, char** argv) {
         s.max_repeats = 5;
         s.rhs_budget = 2'000'000;
     }
+    const auto progress = progress_on_terminal(STDERR_FILENO);  // a progress line on a terminal only
     auto want = [&](const char* p) { return parts.empty() || std::find(parts.begin(), parts.end(), p) != parts.end(); };
     try {
         if (want("derivation")) derivation(s);

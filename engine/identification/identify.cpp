@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "identification/operational_matrix.h"
 #include "identification/walsh_series.h"
 #include "numeric/integrate.h"
@@ -330,6 +331,8 @@ measured_system simulate_system(const std::function<double(double)>& f, const st
     }
     num::integration_options opt;
     opt.abs_tol = opt.rel_tol = 1e-12;
+    progress_task task("simulate_system", 1);
+    task.nest(0, 1);
     const num::integration_result r = num::integrate(rhs, 0.0, std::vector<double>(m + 2, 0.0), times, opt);
     measured_system out;
     out.period = T;
@@ -344,6 +347,7 @@ measured_system simulate_system(const std::function<double(double)>& f, const st
         }
     }
     if (samples) samples->period = T;
+    task.finish();
     return out;
 }
 

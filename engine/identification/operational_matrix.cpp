@@ -7,6 +7,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "identification/walsh_series.h"
 
 namespace symrep::identification {
@@ -87,6 +88,7 @@ GiNaC::matrix operational_matrix_power_exact(unsigned n, long m) {
     // (W Q^m W^T)_(p, q) = sum_(i <= j) W(p, i) r_(j - i) W(q, j)
     GiNaC::matrix out{N, N};
     std::vector<GiNaC::numeric> WQ(N);
+    progress_task task("operational matrix", N);
     for (unsigned p = 0; p < N; ++p) {
         for (unsigned j = 0; j < N; ++j) {
             GiNaC::numeric acc = 0;
@@ -98,6 +100,7 @@ GiNaC::matrix operational_matrix_power_exact(unsigned n, long m) {
             for (unsigned j = 0; j < N; ++j) acc += WQ[j] * walsh_sign(q, j, n);
             out(p, q) = acc / GiNaC::numeric(long(N));
         }
+        task.report(p + 1);
     }
     return out;
 }

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/progress.h"
 
 namespace symrep::num {
 
@@ -93,8 +94,12 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
 
     std::size_t evaluations = 0;
     const std::size_t max_eval = options.max_rhs_evaluations;
+    // progress in time: t - t0 of the span (from the evaluations, every 64th: a
+    // bit test per evaluation; trial times behind an earlier report are ignored)
+    progress_task task("integrate", all.back() - t0);
     auto system = [&](const state_type& y, state_type& dydt, double t) {
         check_interrupt();
+        if ((evaluations & 63) == 0) task.report(t - t0);
         if (++evaluations > max_eval)
             throw error("integrate: more than " + std::to_string(max_eval) +
                         " evaluations of the right-hand side (raise max_rhs_evaluations, or the system is stiff)");
@@ -112,6 +117,7 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
             }
         }
         ++observed;
+        task.report(t - t0);
     };
 
     const double span = all.back() - t0;
@@ -159,6 +165,7 @@ integration_result integrate(const rhs_function& f, double t0, const std::vector
     if (observed != all.size())
         throw error("integrate: the integrator stopped early (" + std::to_string(observed) + " of " +
                     std::to_string(all.size()) + " output times reached)");
+    task.finish();
     return res;
 }
 

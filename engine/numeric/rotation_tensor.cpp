@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/progress.h"
 
 namespace symrep::num {
 
@@ -89,6 +90,7 @@ rotation_tensor_result rotation_tensor(const angular_velocity& w, const std::vec
     // The first step (0.1/|w|) is long enough for a reliable estimate, from which
     // the error model err ~ C h^7 gives the step for the tolerance.
     const double noise = 8 * std::numeric_limits<double>::epsilon();
+    progress_task task("rotation tensor", times.back());
     for (const double target : times) {
         while (t < target) {
             check_interrupt();
@@ -110,6 +112,7 @@ rotation_tensor_result rotation_tensor(const angular_velocity& w, const std::vec
                 // of the products does not accumulate in Q^T Q
                 Q = 0.5 * Q * (3.0 * Eigen::Matrix3d::Identity() - Q.transpose() * Q);
                 t = t_next;
+                task.report(t);
                 if (++res.steps > options.max_steps)
                     throw error("rotation_tensor: more than " + std::to_string(options.max_steps) +
                                 " steps to reach t = " + std::to_string(target) +
@@ -127,6 +130,7 @@ rotation_tensor_result rotation_tensor(const angular_velocity& w, const std::vec
         res.Q.push_back(Q);
     }
     res.evaluations = evaluations;
+    task.finish();
     return res;
 }
 

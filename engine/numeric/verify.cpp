@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/progress.h"
 
 namespace symrep::num {
 
@@ -37,6 +38,9 @@ verify_result compare(std::size_t n_inputs, std::size_t m, EvalAll eval_all, con
     res.n_points = n_points;
     res.times = linspace(t0, t1, n_points);
 
+    // progress: n_points units for the closed form, n_points for the integration
+    progress_task task("verify", 2.0 * double(n_points));
+    task.nest(0, double(n_points));
     auto s = std::chrono::steady_clock::now();
     res.closed_form.resize(static_cast<Eigen::Index>(n_points), static_cast<Eigen::Index>(m));
     // Row-major block of n_points x m values, then into the (column-major) matrix.
@@ -46,7 +50,9 @@ verify_result compare(std::size_t n_inputs, std::size_t m, EvalAll eval_all, con
         for (std::size_t i = 0; i < m; ++i)
             res.closed_form(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = values[k * m + i];
     res.closed_form_seconds = seconds_since(s);
+    task.report(double(n_points));
 
+    task.nest(double(n_points), 2.0 * double(n_points));
     integration_result ir = integrate(rhs, t0, initial_state, res.times, options);
     res.integration_seconds = ir.wall_seconds;
     res.rhs_evaluations = ir.rhs_evaluations;
@@ -85,6 +91,7 @@ verify_result compare(std::size_t n_inputs, std::size_t m, EvalAll eval_all, con
             res.time_of_max = res.times[k_max];
         }
     }
+    task.finish();
     return res;
 }
 
@@ -112,8 +119,10 @@ verify_result verify(const stable_function& closed_form, const rhs_function& rhs
                      const integration_options& options) {
     auto all = [&](verify_result& res, double* values) {
         const std::size_t m = closed_form.n_outputs();
-        for (std::size_t k = 0; k < res.times.size(); ++k)
+        for (std::size_t k = 0; k < res.times.size(); ++k) {
             ++res.closed_form_tiers[static_cast<std::size_t>(closed_form.eval(&res.times[k], values + k * m))];
+            report_progress("closed form", double(k + 1), double(res.times.size()));
+        }
     };
     return compare(closed_form.n_inputs(), closed_form.n_outputs(), all, rhs, initial_state, t0, t1, n_points,
                    options);

@@ -501,7 +501,10 @@ std::vector<std::string> builtin_names(const state_ptr& st) {
 
 }  // namespace
 
+void bind_progress(py::module_& m);  // progress.cpp: ProgressScope, ProgressReport (core/progress.h)
+
 PYBIND11_MODULE(_symrep, m) {
+    bind_progress(m);
     m.doc() = "symrep: exact solutions of dynamical systems by the algebraic methods (the compiled part)";
     m.attr("version") = SYMREP_VERSION;
     m.def("caret_text", &lang::caret_text, py::arg("line"), py::arg("column"),

@@ -29,6 +29,7 @@ import tempfile
 import threading
 
 import symrep
+import symrep.progress
 
 try:
     from ipykernel.kernelbase import Kernel
@@ -162,7 +163,8 @@ class SymrepKernel(Kernel):
         first = 1
         try:
             for first, text in statements(code):
-                failed = self._run(text, first, silent)
+                with symrep.progress.kernel_line(self):  # a long operation shows a progress line (progress.py)
+                    failed = self._run(text, first, silent)
                 if failed:
                     return failed
                 if not silent:
