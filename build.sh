@@ -27,7 +27,7 @@ PACKAGES=(g++ make cmake pkg-config
           python3-ipykernel python3-jupyter-client python3-nbformat python3-nbconvert
           python3-dask python3-distributed
           # the documentation site (bash build.sh docs; docs/build_site.py)
-          python3-sphinx python3-myst-parser python3-nbsphinx python3-sphinx-rtd-theme pandoc)
+          python3-sphinx python3-myst-parser python3-nbsphinx python3-sphinx-rtd-theme pandoc libjs-mathjax)
 
 deps() {
     local missing=()
