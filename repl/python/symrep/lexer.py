@@ -74,7 +74,6 @@ class SymrepLexer(RegexLexer):
     aliases = ["symrep"]
     filenames = ["*.symrep"]
     mimetypes = ["text/x-symrep"]
-    url = "https://github.com/symrep/symrep"
 
     tokens = {
         "root": [
