@@ -7,6 +7,8 @@
 #   bash build.sh build  deps + build only
 #   bash build.sh fuzz [N]  the robustness run under AddressSanitizer + UBSan:
 #                        N random and mutated inputs (default 100000; docs/testing.md)
+#   bash build.sh docs   deps + the program and the Python module, then the documentation
+#                        site (Sphinx, warnings are errors) into BUILD_DIR/docs/html
 # Environment: BUILD_DIR (default: build), ASAN_BUILD_DIR (default: BUILD_DIR-asan),
 # JOBS (default: number of cores).
 set -euo pipefail
@@ -29,7 +31,9 @@ PACKAGES=(g++ make cmake pkg-config
           python3-notebook jupyter-notebook jupyter-nbconvert python3-nbclient libjs-mathjax
           chromium chromium-driver python3-selenium
           # progress: the tqdm bar (optional at run time) and script(1) for the terminal test (docs/progress.md)
-          python3-tqdm bsdutils)
+          python3-tqdm bsdutils
+          # the documentation site (bash build.sh docs; docs/build_site.py)
+          python3-sphinx python3-myst-parser python3-nbsphinx python3-sphinx-rtd-theme pandoc)
 
 deps() {
     local missing=()
@@ -73,5 +77,6 @@ case "${1:-}" in
     test)  deps; build; ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS"
            sanitized_robustness ;;
     fuzz)  deps; sanitized_robustness "${2:-100000}" ;;
-    *) sed -n '2,11p' "$0" >&2; exit 2 ;;
+    docs)  deps; build symrep _symrep; /usr/bin/python3 docs/build_site.py "$BUILD_DIR" ;;
+    *) sed -n '2,13p' "$0" >&2; exit 2 ;;
 esac
