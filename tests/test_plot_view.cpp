@@ -148,9 +148,9 @@ TEST(PlotView, HelixIsDrawnIn3D) {
 
 // very unequal extents in 3-D: z a thousand times thinner but not flat relative to y
 TEST(PlotView, UnequalExtentsGetOwnScalesAndScaleLabels) {
-    // x spans 2000, y 20, z 0.002: y and z are not flat relative to each other, but the curve
-    // is flat in z relative to x (0.002 < 5% of 2000): seen from above, y on its own scale
-    plot_spec s = curve([](double t) { return std::array<double, 3>{1000 * std::cos(t), 10 * std::sin(3 * t), 0.001 * std::sin(t)}; }, 2 * pi);
+    // x spans 2000, y 20, z 0.004: y and z are not flat relative to each other, but the curve
+    // is flat in z relative to x (0.004 < 5% of 2000): seen from above, y on its own scale
+    plot_spec s = curve([](double t) { return std::array<double, 3>{1000 * std::cos(t), 10 * std::sin(3 * t), 0.002 * std::sin(t)}; }, 2 * pi);
     std::string g = script_of(s);
     EXPECT_NE(g.find("seen from above (x-y)"), std::string::npos);
     EXPECT_EQ(label_of(g, "y"), "y (not to scale with x)");
@@ -165,7 +165,7 @@ TEST(PlotView, UnequalExtentsGetOwnScalesAndScaleLabels) {
     s = curve([](double t) { return std::array<double, 3>{std::cos(t), std::sin(t), 2 + 1e-4 * std::sin(t)}; }, 2 * pi);
     s.view = "xz";
     g = script_of(s);
-    EXPECT_EQ(label_of(g, "y"), "z - 2 (x 1e-3) (not to scale with x)");
+    EXPECT_EQ(label_of(g, "y"), "z - 2 (x 1e-6) (not to scale with x)");  // values 2 + 1e-4 sin t
     EXPECT_NE(g.find("seen along y (x-z)"), std::string::npos);
 }
 
@@ -187,7 +187,8 @@ TEST(PlotView, TinyValuesOfAFunctionAreScaled) {
 TEST(PlotView, OptionsInTheLanguage) {
     script_dir d;
     test_session t;
-    const std::string helix = "trajectory([cos(t), sin(t), t/5], [], t = [0, 6], \"" + d.path.string();
+    ASSERT_EQ(t.run("vector r0"), 0);
+    const std::string helix = "trajectory(r0 + [cos(t), sin(t), t/5], [r0 = [0, 0, 0]], t = [0, 6], \"" + d.path.string();
     t.val(helix + "/a.svg\", view = \"top\")");
     EXPECT_NE(slurp(d.path.string() + "/a.svg").find("seen from above (x-y)"), std::string::npos);
     t.val(helix + "/b.svg\", 200, view = \"3d\", azimuth = 40, elevation = 20)");

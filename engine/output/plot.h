@@ -17,7 +17,7 @@
 // directions); otherwise in 3-D. The title says which. Ticks are chosen here (at most
 // about six per axis, so labels never overprint), an axis whose values are tiny, huge
 // or crowded around an offset is drawn scaled, its label saying so ("z (x 1e-3)",
-// "z - 2 (x 1e-4)"), and axes share one scale only when their extents are within
+// "z - 2 (x 1e-6)"), and axes share one scale only when their extents are within
 // 1:4 (equal_scale_ratio); otherwise the label says "not to scale".
 //
 // The program is $SYMREP_GNUPLOT, or "gnuplot" on the PATH; when it cannot be
