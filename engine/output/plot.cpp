@@ -126,11 +126,11 @@ void choose_scale(axis& a) {
 }
 
 /// The tick step for a span (of mapped values): 1, 2, 2.5 or 5 times a power of ten, at
-/// least a fifth of the span, so that at most six labels are printed.
+/// least span / 5.5, so that the range (the span and 6% margins) holds at most six ticks.
 double nice_step(double span) {
     if (!(span > 0)) return 1;
     const double raw = span / 5, mag = std::pow(10.0, std::floor(std::log10(raw))), f = raw / mag;
-    return (f <= 1 + 1e-9 ? 1 : f <= 2 + 1e-9 ? 2 : f <= 2.5 + 1e-9 ? 2.5 : f <= 5 + 1e-9 ? 5 : 10) * mag;
+    return (f <= 1.1 ? 1 : f <= 2.2 ? 2 : f <= 2.75 ? 2.5 : f <= 5.5 ? 5 : 10) * mag;
 }
 
 /// The range (the values and a margin of 3% each side) and the ticks inside it.
@@ -183,15 +183,17 @@ void axis_lines(std::ostream& g, const char* which, const axis& a) {
     g << "set format " << which << " '%g'\n";
 }
 
+/// A unit vector to 3 digits, components below 5e-4 (rounding noise) printed as 0.
 std::string vector_text(const double* v) {
-    return "[" + number_text(v[0], 3) + ", " + number_text(v[1], 3) + ", " + number_text(v[2], 3) + "]";
+    const auto c = [](double x) { return number_text(std::abs(x) < 5e-4 ? 0.0 : x, 3); };
+    return "[" + c(v[0]) + ", " + c(v[1]) + ", " + c(v[2]) + "]";
 }
 
 /// The unit vector with its largest component positive (a direction, printed the same each time).
 void orient(double* v) {
     int k = 0;
     for (int i = 1; i < 3; ++i)
-        if (std::abs(v[i]) > std::abs(v[k]) + 1e-12) k = i;
+        if (std::abs(v[i]) > std::abs(v[k]) + 1e-9) k = i;
     if (v[k] < 0)
         for (int i = 0; i < 3; ++i) v[i] = -v[i];
 }
