@@ -80,6 +80,30 @@ TEST(OutputLatex, SumsFollowTheCanonicalOrderWhateverTheSymbolOrder) {
     EXPECT_EQ(out_of("c*a + b^2 + a^2 - 1"), "a^2 + a*c + b^2 - 1\n");  // the same order as the text printer
 }
 
+// floats in scientific form typeset as m \cdot 10^{e}, every digit kept (issue 32 item 3);
+// ordinary magnitudes and integers unchanged, inside products, lists, matrices, powers too
+TEST(OutputLatex, FloatsInScientificFormAsPowersOfTen) {
+    EXPECT_EQ(out_of("print(latex(1.7670602574040041e-5)); print(latex(-2.5e-12)); print(latex(6.02e23)); "
+                     "print(latex(0.5)); print(latex(123456.0)); print(latex(42)); print(latex(3.0e-5*x)); "
+                     "print(latex(-3.0e-5*x + y)); print(latex([1.5e-7, 2])); print(latex(matrix([[1e-9, 0], [0, 1]]))); "
+                     "print(latex(x^(2.5e-6))); print(latex((2.5e-6)^x)); print(latex(1e-5 + 2e-5*I))"),
+              "1.7670602574040041 \\cdot 10^{-5}\n"
+              "-2.5 \\cdot 10^{-12}\n"
+              "6.02 \\cdot 10^{23}\n"
+              "0.5\n"
+              "123456.0\n"
+              "42\n"
+              "3.0 \\cdot 10^{-5} x\n"
+              "-3.0 \\cdot 10^{-5} x + y\n"
+              "\\left[1.5 \\cdot 10^{-7}, 2\\right]\n"
+              "\\begin{pmatrix} 1.0 \\cdot 10^{-9} & 0 \\\\ 0 & 1 \\end{pmatrix}\n"
+              "x^{2.5 \\cdot 10^{-6}}\n"
+              "\\left(2.5 \\cdot 10^{-6}\\right)^{x}\n"
+              "1.0 \\cdot 10^{-5} + 2.0 \\cdot 10^{-5} i\n");
+    // the text printer keeps its E form
+    EXPECT_EQ(out_of("2.5e-12"), "2.5E-12\n");
+}
+
 TEST(OutputLatex, FormatLatexPrintsEveryResultInLatex) {
     cli_result r = run_symrep("--format latex -e 'x^2/2; [1/2, y]; \"a_b\"'");
     EXPECT_EQ(r.status, 0) << r.err;

@@ -39,6 +39,7 @@ void add_builtins(registry& r, const std::string& section, std::vector<builtin_d
         b.section = section;
         b.min_args = d.min_args;
         b.max_args = d.max_args;
+        b.options = std::move(d.options);
         // the body sees the builtin as registered (without fn: no cycle through the shared copy)
         auto self = std::make_shared<const builtin>(b);
         b.fn = [self, body = std::move(d.body)](const std::vector<value>& a, context& c) { return body(*self, a, c); };

@@ -44,6 +44,15 @@ public:
     virtual void report_fields(const std::string& from, const std::string& prose, const std::string& fields) {
         out() << prose;
     }
+    /// The named options of the call being run (name = value for a name the builtin declares
+    /// in its `options`, e.g. view = "top"), in the order written; set by the session around
+    /// the builtin's body. named_option() finds one (nullptr when not given).
+    std::vector<std::pair<std::string, value>> named_options;
+    const value* named_option(const std::string& name) const {
+        for (const auto& o : named_options)
+            if (o.first == name) return &o.second;
+        return nullptr;
+    }
 };
 
 struct builtin {
@@ -56,6 +65,9 @@ struct builtin {
     std::size_t min_args = 0;
     std::size_t max_args = 0;  ///< any_number for variadic
     std::function<value(const std::vector<value>& args, context& ctx)> fn;
+    /// Names taken as options: an argument `name = value` with such a name is not positional
+    /// (it does not count in min_args..max_args) and reaches the body as context::named_options.
+    std::vector<std::string> options;
 };
 
 class registry {
@@ -94,6 +106,7 @@ struct builtin_declaration {
     std::size_t min_args = 0;
     std::size_t max_args = 0;  ///< any_number for variadic
     builtin_body body;
+    std::vector<std::string> options = {};  ///< named options (builtin::options); most have none
 };
 
 /// Registers every row of `table` in `section` (a name registered twice: std::logic_error).

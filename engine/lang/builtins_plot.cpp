@@ -2,8 +2,11 @@
 // gnuplot (output/plot.h) from closed forms evaluated by the compiled evaluator.
 //
 //   plot(e, values, t = [t0, t1], "file.png" [, n [, "title"]])        e(t), e scalar or list
-//   trajectory(r, values, t = [t0, t1], "file.svg" [, n [, "title"]])  the curve r(t) in 3-D
-//   hodograph(r, values, t = [t0, t1], "file.png" [, n [, "title"]])   the curve r'(t) in 3-D
+//   trajectory(r, values, t = [t0, t1], "file.svg" [, n [, "title"]])  the curve r(t)
+//   hodograph(r, values, t = [t0, t1], "file.png" [, n [, "title"]])   the curve r'(t)
+// trajectory and hodograph take the options view = "auto" | "top" | "xy" | "xz" | "yz" |
+// "plane" | "3d", azimuth = a, elevation = e (degrees, for the 3-D view), anywhere among
+// the arguments; the view "auto" is chosen from the data (output/plot.h).
 #include <cmath>
 #include <sstream>
 
@@ -130,6 +133,26 @@ value space_curve(const builtin& b, const args_t& a, context& c, bool derivative
     if (fs.size() != 3) throw type_error(b.name + ": argument 1 must be a vector with three components");
     output::plot_spec spec;
     spec.three_d = true;
+    if (const value* v = c.named_option("view")) {
+        if (!v->is_string())
+            throw type_error(b.name + ": view must be a string: \"auto\", \"top\", \"xy\", \"xz\", \"yz\", "
+                             "\"plane\" or \"3d\", not " + v->a_kind());
+        spec.view = v->as_string();
+        output::choose_view(spec, b.name);  // an unknown name fails before the sampling
+    }
+    for (const char* name : {"azimuth", "elevation"}) {
+        const value* v = c.named_option(name);
+        if (!v) continue;
+        if (!v->is_ex()) throw type_error(b.name + ": " + name + " must be a number of degrees, not " + v->a_kind());
+        const double deg = to_double(put_values(v->as_ex(), d), b, std::string("the ") + name);
+        if (!std::isfinite(deg) || std::abs(deg) > 360)
+            throw type_error(b.name + ": " + name + " must be a finite number of degrees in [-360, 360]");
+        if (std::string(name) == "azimuth") spec.azimuth = deg;
+        else if (deg < -90 || deg > 90) throw type_error(b.name + ": elevation must be in [-90, 90] degrees");
+        else spec.elevation = deg;
+        if (spec.view != "3d")
+            throw type_error(b.name + ": " + name + " sets the 3-D view: give view = \"3d\" with it");
+    }
     std::vector<double> ts;
     spec.columns = sample(fs, tr, std::size_t(n), b, ts);
     const std::string t = print_ex(tr.t);
@@ -230,21 +253,32 @@ void register_plot_builtins(registry& r) {
          "extension chooses; gnuplot draws it, and must be installed: Debian package gnuplot-nox, or "
          "the program named by SYMREP_GNUPLOT). e is a scalar expression, a list of them (one curve "
          "each, with a legend) or a vector (its x, y, z components); name = e labels a curve. values as in eval: name = value, "
-         "vectors as [x, y, z]; the ends t0, t1 may use them. A relative file name is relative to the "
+         "vectors as [x, y, z]; the ends t0, t1 may use them. At most six ticks per axis; tiny or huge "
+         "values are drawn scaled, the axis label saying so (\"value (x 1e-3)\"). A relative file name is relative to the "
          "running script; a file that already holds the same picture is left alone. Returns nothing.",
          "", "plot([sin(t), cos(w*t)], [w = 2], t = [0, 2*pi], \"/tmp/symrep_plot_example.svg\")",
          4, 6, builtin_plot},
-        {"trajectory", "trajectory(r, values, t = [t0, t1], \"file.svg\" [, n [, \"title\"]])",
+        {"trajectory", "trajectory(r, values, t = [t0, t1], \"file.svg\" [, n [, \"title\"]] [, view = \"auto\"])",
          "Draws the space curve of the vector function r(t), t in [t0, t1] (n samples, default 2000), "
-         "into a PNG or SVG file as plot does: axes x, y, z at equal scales, the start marked. A curve "
-         "in a plane z = const is shown from above.",
+         "into a PNG or SVG file as plot does, the start marked. The view is chosen from the data: a "
+         "nearly planar curve (its extent across its plane at most 5% of its largest extent) is drawn "
+         "in 2-D, in a coordinate plane when it is that flat along a coordinate axis (\"seen from above "
+         "(x-y)\"), else projected on the plane of the motion (axes u, v named by their directions); "
+         "any other curve in 3-D. The legend says which. Options, anywhere among the arguments: "
+         "view = \"auto\" (default), \"top\" (= \"xy\"), \"xy\", \"xz\", \"yz\", \"plane\" or \"3d\"; "
+         "with \"3d\", azimuth = a and elevation = e in degrees (default 30, 30). Axes share one scale "
+         "when their extents are within 1:4, else a label says \"not to scale\"; tiny or huge values "
+         "are drawn scaled, the label saying so (\"z (x 1e-3)\").",
          "", "vector w, r0\ntrajectory(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], "
-         "t = [0, 6], \"/tmp/symrep_trajectory_example.svg\")", 4, 6, builtin_trajectory},
-        {"hodograph", "hodograph(r, values, t = [t0, t1], \"file.png\" [, n [, \"title\"]])",
+         "t = [0, 6], \"/tmp/symrep_trajectory_example.svg\", view = \"3d\", azimuth = 40)", 4, 6,
+         builtin_trajectory, {"view", "azimuth", "elevation"}},
+        {"hodograph", "hodograph(r, values, t = [t0, t1], \"file.png\" [, n [, \"title\"]] [, view = \"auto\"])",
          "Draws the hodograph of the motion r(t): the curve of its velocity dr/dt (diff(r, t), vector "
-         "constants being constant), as trajectory draws a curve.",
+         "constants being constant), as trajectory draws a curve, with the same options (view, "
+         "azimuth, elevation).",
          "", "vector w, r0\nhodograph(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], "
-         "t = [0, 6], \"/tmp/symrep_hodograph_example.svg\")", 4, 6, builtin_hodograph},
+         "t = [0, 6], \"/tmp/symrep_hodograph_example.svg\")", 4, 6, builtin_hodograph,
+         {"view", "azimuth", "elevation"}},
     });
 }
 

@@ -131,8 +131,19 @@ value session::call(const node& n) {
         n.kids[1]->kind == node::ident)
         return iterate(*b, n);
     std::vector<value> args;
+    std::vector<std::pair<std::string, value>> named;  // name = value for a name in b->options
     args.reserve(n.kids.size());
-    for (const auto& k : n.kids) args.push_back(eval(*k));
+    for (const auto& k : n.kids) {
+        if (k->kind == node::binary && k->text == "=" && k->kids.size() == 2 && k->kids[0]->kind == node::ident &&
+            std::find(b->options.begin(), b->options.end(), k->kids[0]->text) != b->options.end()) {
+            for (const auto& o : named)
+                if (o.first == k->kids[0]->text)
+                    throw type_error(b->name + ": the option " + o.first + " is given twice");
+            named.emplace_back(k->kids[0]->text, eval(*k->kids[1]));
+            continue;
+        }
+        args.push_back(eval(*k));
+    }
     if (args.size() < b->min_args || args.size() > b->max_args) {
         std::string expected;
         if (b->min_args == b->max_args) expected = std::to_string(b->min_args);
@@ -141,6 +152,14 @@ value session::call(const node& n) {
         throw type_error(b->name + ": expects " + expected + " argument" + (expected == "1" ? "" : "s") +
                          ", got " + std::to_string(args.size()) + " (usage: " + b->signature + ")");
     }
+    struct options_scope {  // the options of this call only (a nested call has its own)
+        context& c;
+        std::vector<std::pair<std::string, value>> saved;
+        options_scope(context& c, std::vector<std::pair<std::string, value>> o) : c(c), saved(std::move(c.named_options)) {
+            c.named_options = std::move(o);
+        }
+        ~options_scope() { c.named_options = std::move(saved); }
+    } scope(*this, std::move(named));
     return b->fn(args, *this);
 }
 

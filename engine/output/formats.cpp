@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <set>
+#include <regex>
 #include <sstream>
 
 #include "output/formats.h"
@@ -103,7 +104,15 @@ printed lx_numeric(const numeric& x) {
         return {t, a.is_integer() ? l_atom : l_product};
     }
     if (x.is_real()) {
-        std::string t = num_text(x);
+        // a float in scientific form, 1.767E-5 (CLN may mark the exponent with another
+        // letter), typesets as 1.767 \cdot 10^{-5}, every digit kept
+        const std::string t = num_text(x);
+        static const std::regex sci("(-?[0-9]+(?:\\.[0-9]*)?)[EeDdLlFfSs]\\+?(-?)0*([0-9]+)");
+        std::smatch m;
+        if (std::regex_match(t, m, sci)) {
+            const std::string e = m[3].str() == "0" ? std::string("0") : m[2].str() + m[3].str();
+            return {m[1].str() + " \\cdot 10^{" + e + "}", x.is_negative() ? l_sum : l_product};
+        }
         return {t, x.is_negative() ? l_sum : l_atom};
     }
     const printed re = lx_numeric(x.real()), im = lx_numeric(x.imag());
@@ -156,8 +165,8 @@ printed lx_product(const numeric& c, const std::vector<ex>& factors) {
     if (c.is_rational()) {
         if (c.numer() != 1 || (num.empty())) num.insert(num.begin(), num_text(c.numer()));
         if (c.denom() != 1) den.insert(den.begin(), num_text(c.denom()));
-    } else if (c != 1) {
-        num.insert(num.begin(), lparen(lx_numeric(c), l_power));
+    } else if (c != 1) {  // a leading float 1.5 \cdot 10^{-5} needs no parentheses
+        num.insert(num.begin(), c.is_real() ? lx_numeric(c).text : lparen(lx_numeric(c), l_power));
     }
     if (den.empty()) {
         if (num.size() == 1 && factors.size() == 1 && c == 1) return lx(factors[0]);
