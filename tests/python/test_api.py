@@ -8,6 +8,7 @@ import pickle
 import pydoc
 import signal
 import subprocess
+import warnings
 from fractions import Fraction
 
 import numpy as np
@@ -44,6 +45,9 @@ def program_message(statement, tmp_path):
     ("inverse(3, 4)", symrep.LanguageTypeError, TypeError),
     ("[1] + element(multicomplex(1), [1, 0, 0, 0])", symrep.LanguageTypeError, TypeError),
     ("exp(find_generator(polynomial_algebra(X^4 - 2, X)), t)", symrep.ClosedFormError, None),
+    ("element(multicomplex(1), [1, 0, 0, 0]) + element(multicomplex(2), [1, 0, 0, 0, 0, 0, 0, 0])",
+     symrep.AlgebraError, None),
+    ("tan(pi/2)", symrep.DomainError, ValueError),
     ("factorial(10^100)", symrep.SizeError, None),
 ])
 def test_each_typed_error_of_the_engine_has_its_class_and_the_programs_message(s, tmp_path, statement, cls,
@@ -55,7 +59,7 @@ def test_each_typed_error_of_the_engine_has_its_class_and_the_programs_message(s
     if python_too is not None:
         assert isinstance(err, python_too)
     # the class is the most specific one: no sibling of the hierarchy also matches
-    for other in (symrep.ParseError, symrep.ZeroDivisorError, symrep.DivisionByZeroError, symrep.UndecidedError,
+    for other in (symrep.ParseError, symrep.AlgebraError, symrep.DomainError, symrep.ZeroDivisorError, symrep.DivisionByZeroError, symrep.UndecidedError,
                   symrep.LanguageTypeError, symrep.ClosedFormError, symrep.SizeError, symrep.TimeLimitError):
         assert isinstance(err, other) == issubclass(cls, other), (other, type(err))
     assert err.line == 1 and err.column >= 1 and err.source_line == statement
@@ -83,6 +87,11 @@ def test_zero_divisor_names_its_components_and_operations_raise_the_same_classes
         s.eval("x") / 0
     with pytest.raises(symrep.UndecidedError, match="cannot decide"):
         s.call("energy", s.eval("exp(-k*t)"), s.eval("t"))
+    # an undecided comparison: == raises, never a guess (in a statement and in Python)
+    with pytest.raises(symrep.UndecidedError, match="cannot decide whether the two sides are equal"):
+        s.eval("sqrt(x^2 + 2*x + 1) == abs(x + 1)")
+    with pytest.raises(symrep.UndecidedError, match="cannot decide whether the two sides are equal"):
+        s.eval("sqrt(x^2 + 2*x + 1)") == s.eval("abs(x + 1)")
 
 
 # a statement that runs for minutes, its steps the language's own (the time limit and Ctrl-C are
@@ -157,7 +166,9 @@ def test_builtins_are_in_dir_and_in_ipythons_completion(s):
     completer = pytest.importorskip("IPython.core.completer")
     ip = completer.IPCompleter(namespace={"w": w}, global_namespace={})
     ip.use_jedi = False  # the attribute completer, which reads dir()
-    _, matches = ip.complete(line_buffer="w.inver", cursor_pos=7)
+    with warnings.catch_warnings():  # complete() is IPython's stable call, "pending deprecation" since 6.0
+        warnings.simplefilter("ignore", PendingDeprecationWarning)
+        _, matches = ip.complete(line_buffer="w.inver", cursor_pos=7)
     assert "w.inverse" in matches, matches
     # jedi (IPython's default completer, IDEs): the live object and the stubs
     jedi = pytest.importorskip("jedi")
