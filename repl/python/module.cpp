@@ -42,7 +42,6 @@
 #include "lang/values.h"
 #include "syntax/lexer.h"
 #include "numeric/evaluator.h"
-#include "output/printer.h"
 #include "numeric/stable_evaluator.h"
 #include "vector/vector.h"
 
@@ -663,7 +662,7 @@ py::object tree_of_ex(const GiNaC::ex& e) {
         for (std::size_t i = 0; i < e.nops(); ++i) l.append(tree_of_ex(e.op(i)));
         return l;
     };
-    if (is_vector_symbol(e)) return py::make_tuple("vector", "a vector", output::print_ex(e));
+    if (is_vector_symbol(e)) return py::make_tuple("vector", "a vector", lang::print_value(lang::value(e), false));
     if (GiNaC::is_a<GiNaC::numeric>(e)) return tree_of_numeric(GiNaC::ex_to<GiNaC::numeric>(e));
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
         const char* a = e.info(GiNaC::info_flags::positive) ? "positive" : e.info(GiNaC::info_flags::real) ? "real" : "complex";
@@ -695,7 +694,7 @@ py::object tree_of_ex(const GiNaC::ex& e) {
             for (unsigned j = 0; j < m.cols(); ++j) entries.append(tree_of_ex(m(i, j)));
         return py::make_tuple("matrix", m.rows(), m.cols(), entries);
     }
-    return py::make_tuple("other", GiNaC::ex_to<GiNaC::basic>(e).class_name(), output::print_ex(e));
+    return py::make_tuple("other", GiNaC::ex_to<GiNaC::basic>(e).class_name(), lang::print_value(lang::value(e), false));
 }
 
 py::object tree_of(const lang::value& v) {
