@@ -157,6 +157,8 @@ std::string trimmed(const std::string& s) {
 }  // namespace
 
 
+std::string reported_message(const std::string& message) { return escape_controls(shorten_numbers(message)); }
+
 std::string caret_text(const std::string& line, int column) {
     if (line.empty() || column < 1 || static_cast<std::size_t>(column) > line.size() + 1) return {};
     std::string pad;  // one blank per character before the column (tabs kept)
@@ -167,7 +169,7 @@ std::string caret_text(const std::string& line, int column) {
 
 void session::report(const source_location& where, const std::string& message) {
     ++failures_;
-    const std::string msg = escape_controls(shorten_numbers(message));
+    const std::string msg = reported_message(message);
     if (opts_.stop_on_error) stopped_ = true;
     reported_error r{msg, where, {}};
     if (auto it = sources_.find(where.file); it != sources_.end()) {

@@ -22,6 +22,11 @@ std::string clear_message(const std::string& m);
 /// The message to show for an exception: symrep's own verbatim, others translated.
 std::string message_of(const std::exception& e);
 
+/// A message as the session reports it (session::report, lang/interpreter.cpp): each run
+/// of more than 60 digits shortened to its ends and its count, control characters escaped.
+/// The front-ends that raise errors themselves (the Python module) show the same bytes.
+std::string reported_message(const std::string& message);
+
 /// The clock of a statement: sets `start` to now and, for a time limit > 0, the
 /// deadline that the engine's long loops and guards see through check_interrupt()
 /// (core/interrupt.h), and lets operator new throw allocation_interrupted

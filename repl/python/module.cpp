@@ -3,19 +3,22 @@
 // arithmetic and builtins (lang::binary_op, lang::negate, lang::values_equal, the registry's
 // bodies), and the compiled evaluators (numeric/evaluator.h, numeric/stable_evaluator.h):
 //
-//   Session   runs statements: eval() returns the last value or raises symrep.Error with the
-//             line and column; run() returns the events of a cell in order (text printed,
-//             results, pictures written, the error) for front-ends such as the Jupyter kernel;
-//             call() runs a builtin on values; completions() and help() are the interactive
-//             prompt's (lang/help.h).
+//   Session   runs statements: eval() returns the last value or raises symrep.Error (a subclass
+//             per typed exception of the engine, error_class) with the line and column; run()
+//             returns the events of a cell in order (text printed, results, pictures written,
+//             the error) for front-ends such as the Jupyter kernel; call() runs a builtin on
+//             values; completions() and help() are the interactive prompt's (lang/help.h).
 //   Value     a value of the language (expression, element, list, ...) with its text, LaTeX
 //             and kind; Python's operators are the language's operators on the values, every
-//             builtin is a method (v.inverse()); to_python(), float(), bool(), len(), [k]
-//             and iteration convert where exact.
+//             builtin is a method (v.inverse(), made by symrep/_methods.py with the builtin's
+//             help and signature); to_python(), float(), int(), abs(), bool(), len(), [k] and
+//             iteration convert where exact; _tree() is the expression tree symrep/_sympy.py
+//             walks; values pickle by their canonical text (symrep/_methods.py).
 //   Compiled  a closed form compiled once, evaluated over NumPy arrays with the GIL released.
 //
-// The package's Python side (symrep/__init__.py) defines symrep.Error; symrep/_sympy.py
-// reads a value into SymPy (Value.to_sympy).
+// Python arguments become values exactly (from_python: numbers, strings, lists, NumPy arrays);
+// any other Python type raises Python's TypeError (an operator returns NotImplemented).
+// The package's Python side (symrep/__init__.py) defines symrep.Error and its subclasses.
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -23,8 +26,10 @@
 
 #include <chrono>
 #include <csignal>
+#include <cctype>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -57,11 +62,73 @@ struct py_value {
     state_ptr state;
 };
 
-[[noreturn]] void raise_error(const std::string& message, const std::string& file, int line, int column,
-                              const std::string& source_line) {
-    py::object error = py::module_::import("symrep").attr("Error");
-    py::object e = line > 0 ? error(message, file, line, column, source_line)
-                            : error(message, py::none(), py::none(), py::none(), py::none());
+// The class of symrep's Python exceptions (symrep/__init__.py) for an exception of the
+// engine (core/error.h): syntax_error -> ParseError, zero_divisor_error -> ZeroDivisorError,
+// domain_error -> DomainError (UndecidedError where the engine says it cannot decide, the
+// message every undecided zero test, sign or convergence gives), type_error ->
+// LanguageTypeError, ...; the interruption and the time limit by their messages
+// (core/interrupt.h); GiNaC's division by zero and poles by their types.
+std::string error_class(const std::exception_ptr& p, const std::string& message) {
+    const auto interrupted_or = [&](const char* other) -> std::string {
+        if (message == "interrupted") return "Interrupted";
+        if (message.rfind("time limit", 0) == 0) return "TimeLimitError";
+        return other;
+    };
+    if (!p) return interrupted_or("Error");
+    try {
+        std::rethrow_exception(p);
+    } catch (const symrep::syntax_error&) {
+        return "ParseError";
+    } catch (const symrep::zero_divisor_error&) {
+        return "ZeroDivisorError";
+    } catch (const symrep::algebra_error&) {
+        return "AlgebraError";
+    } catch (const symrep::domain_error&) {
+        if (message.find("division by zero") != std::string::npos) return "DivisionByZeroError";
+        return message.find("cannot decide") != std::string::npos ? "UndecidedError" : "DomainError";
+    } catch (const symrep::type_error&) {
+        return "LanguageTypeError";
+    } catch (const symrep::size_error&) {
+        return "SizeError";
+    } catch (const symrep::closed_form_error&) {
+        return "ClosedFormError";
+    } catch (const symrep::internal_error&) {
+        return "InternalError";
+    } catch (const lang::script_error& e) {
+        return error_class(e.original, message);
+    } catch (const std::bad_alloc&) {  // Ctrl-C or the time limit inside a library call, or no memory
+        return interrupted_or("SizeError");
+    } catch (const symrep::error&) {
+        return interrupted_or("Error");
+    } catch (const std::exception&) {
+        // GiNaC's: 1/0 (numeric::div, power::eval), a pole (tan(pi/2)), log(0)
+        if (message == "division by zero") return "DivisionByZeroError";
+        try {
+            std::rethrow_exception(p);
+        } catch (const std::domain_error&) {
+            return "DomainError";
+        } catch (...) {
+        }
+        return interrupted_or("Error");
+    } catch (...) {
+        return "Error";
+    }
+}
+
+// Raises symrep.<cls>(message, file, line, column, source line); no place when line is 0.
+[[noreturn]] void raise_error(const std::string& cls, const std::string& message, const std::string& file, int line,
+                              int column, const std::string& source_line, const std::exception_ptr& p = nullptr) {
+    // the bytes the program prints (lang::reported_message: long numbers shortened, controls escaped)
+    const std::string shown = lang::reported_message(message);
+    py::object error = py::module_::import("symrep").attr(cls.c_str());
+    py::object e = line > 0 ? error(shown, file, line, column, source_line)
+                            : error(shown, py::none(), py::none(), py::none(), py::none());
+    if (p) try {
+            std::rethrow_exception(p);
+        } catch (const symrep::zero_divisor_error& z) {
+            e.attr("ranks") = py::cast(z.ranks);  // the vanishing idempotent components (III.1.55)
+        } catch (...) {
+        }
     PyErr_SetObject(error.ptr(), e.ptr());
     throw py::error_already_set();
 }
@@ -91,6 +158,7 @@ private:
 py_value eval(const state_ptr& st, const std::string& code) {
     lang::value v;
     std::string message, file, source;
+    std::exception_ptr what;
     int line = 0, column = 0;
     {
         // the GIL stays held: GiNaC is not thread safe (docs/library.md), so no other Python
@@ -101,13 +169,16 @@ py_value eval(const state_ptr& st, const std::string& code) {
         } catch (const lang::script_error& e) {
             message = e.what(), file = "<python>", line = e.where.line, column = e.where.column;
             source = lang::source_line(code, line);
+            what = e.original;
         } catch (const std::bad_alloc& e) {
             message = allocation_failure_message(e, "out of memory");
+            what = std::current_exception();
         } catch (const std::exception& e) {
             message = e.what();
+            what = std::current_exception();
         }
     }
-    if (!message.empty()) raise_error(message, file, line, column, source);
+    if (!message.empty()) raise_error(error_class(what, message), message, file, line, column, source, what);
     return {std::move(v), st};
 }
 
@@ -119,19 +190,25 @@ template <class F>
 py_value engine_call(const state_ptr& st, F&& f) {
     lang::value v;
     std::string message;
+    std::exception_ptr what;
     {
         interruptible guard;  // the GIL held, as in eval()
         std::chrono::steady_clock::time_point start;
         const lang::statement_clock clock(st->s.options().time_limit, start);
         try {
             v = f();
+        } catch (const py::error_already_set&) {
+            throw;  // a Python error (a wrong Python type among the arguments) stays Python's
+        } catch (const py::builtin_exception&) {
+            throw;
         } catch (const std::exception& e) {
             message = lang::message_of(e);
+            what = std::current_exception();
         } catch (...) {
             message = "unknown internal error";
         }
     }
-    if (!message.empty()) raise_error(message, "", 0, 0, "");
+    if (!message.empty()) raise_error(error_class(what, message), message, "", 0, 0, "", what);
     return {std::move(v), st};
 }
 
@@ -145,6 +222,12 @@ GiNaC::numeric integer_from_python(const py::handle& x, bool& ok) {
     return ok ? GiNaC::numeric(text.c_str()) : GiNaC::numeric(0);
 }
 
+// NumPy's arrays and scalars (anything with dtype and tolist()) read as the Python lists and
+// numbers tolist() gives: an array is a list value (nested for n-D), a float64 the double it is
+bool numpy_like(const py::handle& x) {
+    return py::hasattr(x, "dtype") && py::hasattr(x, "tolist") && py::hasattr(x, "ndim");
+}
+
 lang::value from_python(const py::handle& x) {
     if (py::isinstance<py_value>(x)) return x.cast<const py_value&>().v;
     if (py::isinstance<py::bool_>(x)) return lang::value(x.cast<bool>());
@@ -152,8 +235,16 @@ lang::value from_python(const py::handle& x) {
     if (py::isinstance<py::int_>(x)) return lang::value(GiNaC::ex(integer_from_python(x, ok)));
     if (py::isinstance<py::float_>(x)) {
         const double d = x.cast<double>();
-        if (!std::isfinite(d)) throw symrep::type_error("not a finite number: " + py::repr(x).cast<std::string>());
+        if (!std::isfinite(d)) throw py::value_error("not a finite number: " + py::repr(x).cast<std::string>());
         return lang::value(GiNaC::ex(GiNaC::numeric(d)));
+    }
+    if (numpy_like(x)) {
+        const py::object kind = x.attr("dtype").attr("kind");
+        const std::string k = py::str(kind).cast<std::string>();
+        if (k.size() != 1 || std::string("biuf").find(k[0]) == std::string::npos)
+            throw py::type_error("cannot pass a NumPy array of dtype " + py::str(x.attr("dtype")).cast<std::string>() +
+                                 " to symrep (booleans, integers and floats only)");
+        return from_python(x.attr("tolist")());
     }
     if (py::hasattr(x, "numerator") && py::hasattr(x, "denominator") && !py::isinstance<py::str>(x)) {
         bool ok_d = false;
@@ -170,8 +261,19 @@ lang::value from_python(const py::handle& x) {
         for (const py::handle& y : x) l.push_back(from_python(y));
         return lang::value(std::move(l));
     }
-    throw symrep::type_error("cannot pass a Python " + py::str(x.get_type().attr("__name__")).cast<std::string>() +
-                             " to symrep (numbers, strings, lists and symrep values only)");
+    // a wrong Python type is Python's TypeError, as for any Python function
+    throw py::type_error("cannot pass a Python " + py::str(x.get_type().attr("__name__")).cast<std::string>() +
+                         " to symrep (numbers, strings, lists, NumPy arrays and symrep values only)");
+}
+
+// from_python, or nullopt for an object that is no value of the language (an operator then
+// returns NotImplemented: Python tries the other operand, then raises its TypeError)
+std::optional<lang::value> try_from_python(const py::handle& x) {
+    try {
+        return from_python(x);
+    } catch (const py::type_error&) {
+        return std::nullopt;
+    }
 }
 
 // name(args...): the builtin's body on the values, after the checks the language makes of a
@@ -199,12 +301,21 @@ py_value call(const state_ptr& st, const std::string& name, const std::vector<la
     });
 }
 
-// a op b by the language's arithmetic (lang::binary_op), Python's operands in either order
-py_value binary(const py_value& a, const py::object& b, const std::string& op, bool reflected) {
-    const lang::value other = from_python(b);
-    return engine_call(a.state, [&] {
-        return reflected ? lang::binary_op(op, other, a.v) : lang::binary_op(op, a.v, other);
-    });
+// a op b by the language's arithmetic (lang::binary_op), Python's operands in either order;
+// NotImplemented for an operand that is no value of the language
+py::object binary(const py_value& a, const py::object& b, const std::string& op, bool reflected) {
+    const std::optional<lang::value> other = try_from_python(b);
+    if (!other) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+    return py::cast(engine_call(a.state, [&] {
+        return reflected ? lang::binary_op(op, *other, a.v) : lang::binary_op(op, a.v, *other);
+    }));
+}
+
+// a.cross(b), a.dot(b): as binary, a TypeError for an operand that is no value of the language
+py_value binary_method(const py_value& a, const py::object& b, const std::string& op) {
+    const std::optional<lang::value> other = try_from_python(b);
+    if (!other) from_python(b);  // raises the TypeError naming the type
+    return engine_call(a.state, [&] { return lang::binary_op(op, a.v, *other); });
 }
 
 // --- the compiled fast path ---------------------------------------------------
@@ -219,8 +330,10 @@ struct compiled {
     std::string text;
 };
 
-// A value for name: the closed form (or another value) must have the symbol.
-void check_value_name(const GiNaC::ex& name, const std::vector<GiNaC::ex>& forms, const lang::data_values& d) {
+// A value or an input for `name`: the closed form (or another value) must have the symbol; a
+// name it does not have is a typo, not a no-op (the error names it and the form's symbols).
+void check_value_name(const GiNaC::ex& name, const std::vector<GiNaC::ex>& forms, const lang::data_values& d,
+                      bool input = false) {
     for (const GiNaC::ex& f : forms)
         if (f.has(name)) return;
     for (const auto& [k, x] : d.scalars)
@@ -233,13 +346,15 @@ void check_value_name(const GiNaC::ex& name, const std::vector<GiNaC::ex>& forms
             if (GiNaC::is_a<GiNaC::symbol>(*it)) names.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
     std::string list;
     for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw symrep::type_error("compile: a value is given for '" + num::symbol_name(name) +
-                             "', which the closed form does not have (its symbols: " +
-                             (list.empty() ? std::string("none") : list) + ")");
+    throw symrep::type_error("compile: " +
+                             (input ? "the input '" + num::symbol_name(name) + "' is not a symbol of the closed form"
+                                    : "a value is given for '" + num::symbol_name(name) +
+                                          "', which the closed form does not have") +
+                             " (its symbols: " + (list.empty() ? std::string("none") : list) + ")");
 }
 
 compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::string>& inputs,
-                 const py::object& values, bool stable) {
+                 const py::dict& values, bool stable) {
     // an expression (a scalar, a vector: its components) or a list of them (flattened)
     std::vector<GiNaC::ex> forms;
     std::function<bool(const lang::value&)> collect = [&](const lang::value& x) {
@@ -250,25 +365,31 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
         return true;
     };
     if (!collect(e.v))
-        raise_error("compile: the closed form must be an expression or a list of them, not " + e.v.a_kind(), "", 0,
-                    0, "");
+        raise_error("LanguageTypeError",
+                    "compile: the closed form must be an expression or a list of them, not " + e.v.a_kind(), "", 0, 0,
+                    "");
     compiled c;
     std::string message;
+    std::exception_ptr what;
     try {
         lang::data_values d;
-        if (!values.is_none()) {
+        if (!values.empty()) {
             // the relations name = value, as the language makes them (vectors as [x, y, z]); the
             // name read as the language reads it (a symbol, or the value of a variable)
-            const py::dict dv = values.cast<py::dict>();
             lang::list relations;
-            for (const auto& [k, v] : dv) {
+            for (const auto& [k, v] : values) {
                 const lang::value rhs = from_python(v);
                 try {
+                    if (!py::isinstance<py::str>(k))
+                        throw py::type_error("compile: the names of values are strings, not " +
+                                             py::str(k.get_type().attr("__name__")).cast<std::string>());
                     relations.push_back(lang::binary_op("=", st->s.evaluate(k.cast<std::string>()), rhs));
                 } catch (const symrep::error&) {
                     throw;
-                } catch (const std::exception& e) {
-                    throw symrep::error(lang::message_of(e));
+                } catch (const py::builtin_exception&) {
+                    throw;
+                } catch (const std::exception& failure) {
+                    throw symrep::error(lang::message_of(failure));
                 }
             }
             const lang::value vl(std::move(relations));
@@ -282,6 +403,9 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
         std::vector<GiNaC::ex> in;
         for (const std::string& name : inputs) {
             const GiNaC::ex sym = st->s.symbol(name);
+            check_value_name(sym, forms, d, true);
+            if (std::find(c.names.begin(), c.names.end(), name) != c.names.end())
+                throw symrep::type_error("compile: the input '" + name + "' is named twice");
             c.names.push_back(name);
             if (is_vector_symbol(sym)) {
                 GiNaC::ex comps[3];
@@ -323,10 +447,17 @@ compiled compile(const state_ptr& st, const py_value& e, const std::vector<std::
         c.stable = std::make_shared<num::stable_function>(outs, in);
         c.n_outputs = outs.size();
         c.text = lang::print_value(e.v);
+    } catch (const py::builtin_exception&) {
+        throw;  // a wrong Python type: Python's TypeError
+    } catch (const py::error_already_set&) {
+        throw;
     } catch (const std::exception& ex) {
         message = ex.what();
+        what = std::current_exception();
     }
-    if (!message.empty()) raise_error(message.rfind("compile: ", 0) == 0 ? message : "compile: " + message, "", 0, 0, "");
+    if (!message.empty())
+        raise_error(error_class(what, message), message.rfind("compile: ", 0) == 0 ? message : "compile: " + message,
+                    "", 0, 0, "", what);
     return c;
 }
 
@@ -338,7 +469,18 @@ enum class evaluation { checked, stable, unchecked };
 // The accuracy the checked path proves for every output (relative to its value); docs/python.md.
 constexpr double plain_rel_tol = 1e-6;
 
-py::array_t<double> evaluate(const compiled& c, const py::kwargs& kw, evaluation mode) {
+py::array_t<double> evaluate(const compiled& c, const py::args& args, const py::kwargs& given, evaluation mode) {
+    // the inputs by position (in the order of c.inputs) and by name, as a Python function takes them
+    if (args.size() > c.names.size())
+        throw py::type_error("takes " + std::to_string(c.names.size()) + " input" + (c.names.size() == 1 ? "" : "s") +
+                             " but " + std::to_string(args.size()) + " were given by position");
+    py::dict kw;
+    for (const auto& [key, x] : given) kw[key] = x;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (kw.contains(c.names[i].c_str()))
+            throw py::type_error("got multiple values for input '" + c.names[i] + "'");
+        kw[c.names[i].c_str()] = args[i];
+    }
     const std::size_t k = c.inputs.size();
     std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>> cols;
     std::size_t n = 1;
@@ -476,21 +618,133 @@ py::list items(const py_value& v) {
     return l;
 }
 
-// v.name: the builtin name(v, ...) as a bound method, its help as the docstring
-py::object builtin_method(const py_value& v, const std::string& name) {
+// v.name: the builtin name(v, ...) as a bound method, made by symrep._methods (a Python
+// function with the builtin's signature and its help as the docstring: help(v.inverse))
+py::object builtin_method(const py::object& self, const std::string& name) {
+    const py_value& v = self.cast<const py_value&>();
     if (name.rfind("_", 0) == 0) throw py::attribute_error(name);
     if (!v.state->s.builtins().find(name))
         throw py::attribute_error("'" + name + "' is neither an attribute of a symrep value nor a builtin");
-    const std::string help = lang::help_text(v.state->s.builtins(), name);
-    py::options options;
-    options.disable_function_signatures();
-    return py::cpp_function(
-        [v, name](const py::args& args) {
-            std::vector<lang::value> a{v.v};
-            for (const py::handle& x : args) a.push_back(from_python(x));
-            return call(v.state, name, a);
-        },
-        py::name(name.c_str()), py::doc(help.empty() ? nullptr : help.c_str()));
+    return py::module_::import("symrep._methods").attr("bound_builtin")(self, name);
+}
+
+// (signature, help text, min_args, max_args (-1: any number)) of a builtin, or None
+py::object builtin_info(const state_ptr& st, const std::string& name) {
+    const lang::builtin* b = st->s.builtins().find(name);
+    if (!b) return py::none();
+    return py::make_tuple(b->signature, lang::help_text(st->s.builtins(), name), b->min_args,
+                          b->max_args == SIZE_MAX ? -1 : py::ssize_t(b->max_args));
+}
+
+// The expression tree of a value for symrep._sympy (a walk, not a printed text): nested tuples
+//   ("integer", int) ("rational", p, q) ("float", text, digits) ("complex", re, im)
+//   ("symbol", name, assumption: "real"/"positive"/"complex") ("constant", name)
+//   ("add", [..]) ("mul", [..]) ("power", b, e) ("function", name, [..]) ("relation", op, l, r)
+//   ("matrix", rows, cols, [entries row by row]) ("list", [..]) ("boolean", b) ("string", s)
+//   ("vector", what: a vector symbol or an operation on vectors, its text)
+//   ("other", kind, text): no counterpart (an element, an algebra, a GiNaC object unknown here)
+py::object tree_of_ex(const GiNaC::ex& e);
+
+py::object tree_of_numeric(const GiNaC::numeric& x) {
+    if (x.is_integer()) return py::make_tuple("integer", python_int(x));
+    if (x.is_rational()) return py::make_tuple("rational", python_int(x.numer()), python_int(x.denom()));
+    if (x.is_real()) {
+        std::ostringstream o;
+        o << x;  // CLN's decimal text of the float, every digit it holds
+        return py::make_tuple("float", o.str(), long(GiNaC::Digits));
+    }
+    return py::make_tuple("complex", tree_of_numeric(x.real()), tree_of_numeric(x.imag()));
+}
+
+py::object tree_of_ex(const GiNaC::ex& e) {
+    const auto kids = [&] {
+        py::list l;
+        for (std::size_t i = 0; i < e.nops(); ++i) l.append(tree_of_ex(e.op(i)));
+        return l;
+    };
+    if (is_vector_symbol(e)) return py::make_tuple("vector", "a vector", lang::print_value(lang::value(e), false));
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return tree_of_numeric(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+        const char* a = e.info(GiNaC::info_flags::positive) ? "positive" : e.info(GiNaC::info_flags::real) ? "real" : "complex";
+        return py::make_tuple("symbol", GiNaC::ex_to<GiNaC::symbol>(e).get_name(), a);
+    }
+    if (GiNaC::is_a<GiNaC::constant>(e)) {
+        std::ostringstream o;
+        o << e;
+        return py::make_tuple("constant", o.str());
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) return py::make_tuple("add", kids());
+    if (GiNaC::is_a<GiNaC::mul>(e)) return py::make_tuple("mul", kids());
+    if (GiNaC::is_a<GiNaC::power>(e)) return py::make_tuple("power", tree_of_ex(e.op(0)), tree_of_ex(e.op(1)));
+    if (GiNaC::is_a<GiNaC::function>(e)) return py::make_tuple("function", GiNaC::ex_to<GiNaC::function>(e).get_name(), kids());
+    if (GiNaC::is_a<GiNaC::relational>(e)) {
+        const GiNaC::relational& r = GiNaC::ex_to<GiNaC::relational>(e);
+        const char* op = r.info(GiNaC::info_flags::relation_equal)           ? "="
+                         : r.info(GiNaC::info_flags::relation_not_equal)     ? "!="
+                         : r.info(GiNaC::info_flags::relation_less)          ? "<"
+                         : r.info(GiNaC::info_flags::relation_less_or_equal) ? "<="
+                         : r.info(GiNaC::info_flags::relation_greater)       ? ">"
+                                                                      : ">=";
+        return py::make_tuple("relation", op, tree_of_ex(r.lhs()), tree_of_ex(r.rhs()));
+    }
+    if (GiNaC::is_a<GiNaC::matrix>(e)) {
+        const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
+        py::list entries;
+        for (unsigned i = 0; i < m.rows(); ++i)
+            for (unsigned j = 0; j < m.cols(); ++j) entries.append(tree_of_ex(m(i, j)));
+        return py::make_tuple("matrix", m.rows(), m.cols(), entries);
+    }
+    return py::make_tuple("other", GiNaC::ex_to<GiNaC::basic>(e).class_name(), lang::print_value(lang::value(e), false));
+}
+
+py::object tree_of(const lang::value& v) {
+    if (v.is_bool()) return py::make_tuple("boolean", v.as_bool());
+    if (v.is_string()) return py::make_tuple("string", v.as_string());
+    if (v.is_list()) {
+        py::list l;
+        for (const lang::value& x : v.as_list()) l.append(tree_of(x));
+        return py::make_tuple("list", l);
+    }
+    if (v.is_ex()) {
+        // a vector expression (x, ., |v|) has no SymPy counterpart: named as a whole
+        for (auto it = v.as_ex().preorder_begin(); it != v.as_ex().preorder_end(); ++it)
+            if (is_vector_symbol(*it))
+                return py::make_tuple("vector", "a vector expression", lang::print_value(v, false));
+        return tree_of_ex(v.as_ex());
+    }
+    return py::make_tuple("other", v.kind(), lang::print_value(v, false));
+}
+
+// The declarations a value's canonical text needs to be read back (pickling): its vector
+// symbols and its positive symbols, sorted by name
+py::tuple declarations_of(const lang::value& v) {
+    std::set<std::string> vectors, positives;
+    std::function<void(const lang::value&)> walk = [&](const lang::value& x) {
+        if (x.is_list())
+            for (const lang::value& y : x.as_list()) walk(y);
+        if (!x.is_ex()) return;
+        for (auto it = x.as_ex().preorder_begin(); it != x.as_ex().preorder_end(); ++it) {
+            if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
+            const std::string n = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+            if (is_vector_symbol(*it)) vectors.insert(n);
+            else if (it->info(GiNaC::info_flags::positive)) positives.insert(n);
+        }
+    };
+    walk(v);
+    return py::make_tuple(std::vector<std::string>(vectors.begin(), vectors.end()),
+                          std::vector<std::string>(positives.begin(), positives.end()));
+}
+
+// int(v), operator.index(v): an exact integer only (a non-integer number: ValueError, as
+// int("2.5"); no number: TypeError)
+py::object to_int(const py_value& v) {
+    if (v.v.is_ex() && GiNaC::is_a<GiNaC::numeric>(v.v.as_ex())) {
+        const GiNaC::numeric x = GiNaC::ex_to<GiNaC::numeric>(v.v.as_ex());
+        if (x.is_integer()) return python_int(x);
+        throw py::value_error("not an integer: " + lang::print_value(v.v, false) +
+                              " (int() of a symrep value is exact; use float(), math.floor or round)");
+    }
+    throw py::type_error("int() of a symrep " + v.v.kind() + " that is no integer: " + lang::print_value(v.v, false));
 }
 
 std::vector<std::string> builtin_names(const state_ptr& st) {
@@ -527,8 +781,11 @@ PYBIND11_MODULE(_symrep, m) {
     session_class
         .def(py::init([] { return std::make_shared<session_state>(); }))
         .def("eval", [](const state_ptr& st, const std::string& code) { return eval(st, code); }, py::arg("code"),
-             "Runs the statements of `code` and returns the value of the last one (None for a "
-             "declaration); raises symrep.Error with the line and column at the first failure.")
+             "Runs the statements of `code` (the symrep language, docs/language.md) and returns the value of "
+             "the last one (None for a declaration); at the first failure raises symrep.Error (ParseError, "
+             "ZeroDivisorError, DomainError, UndecidedError, LanguageTypeError, ...) with the line and column "
+             "and the message the symrep program prints. The reference of a function, as `symrep --doc` and "
+             "`help name` show it: s.help(name), or help(v.name) on a value v.")
         .def(
             "run",
             [](const state_ptr& st, const std::string& code, const std::string& name) {
@@ -614,23 +871,110 @@ PYBIND11_MODULE(_symrep, m) {
                  return lang::unknown_builtin_message(st->s.builtins(), name);
              })
         .def("builtin_names", &builtin_names, "The names of the builtins (each is also a method of Value).")
+        .def("_builtin_info", &builtin_info, py::arg("name"),
+             "(signature, help text, min_args, max_args or -1) of a builtin, or None (symrep._methods).")
+        .def_property(
+            "time_limit", [](const state_ptr& st) { return st->s.options().time_limit; },
+            [](const state_ptr& st, double seconds) {
+                if (!(seconds >= 0) || !std::isfinite(seconds))
+                    throw py::value_error("time_limit: seconds >= 0 (0: no limit)");
+                st->s.options().time_limit = seconds;
+            },
+            "Seconds a statement (eval, an operator, a builtin call) may run, 0 for no limit (the program's "
+            "--time-limit); past it symrep.TimeLimitError.")
+        .def(
+            "value", [](const state_ptr& st, const py::object& x) { return py_value{from_python(x), st}; },
+            py::arg("x"),
+            "The Python object as a Value of this session: bool, int, Fraction, float, str, list, tuple, "
+            "NumPy array (a list) or Value (TypeError for anything else).")
+        .def(
+            "symbol",
+            [](const state_ptr& st, const std::string& name) {
+                // a name the language reads as a symbol: letters, digits, _; no keyword or builtin constant
+                bool ok = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
+                for (const char ch : name) ok = ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+                for (const char* k : {"vector", "positive", "true", "false", "pi", "I"}) ok = ok && name != k;
+                if (!ok)
+                    throw py::value_error("not a name of the symrep language: " + py::repr(py::str(name)).cast<std::string>());
+                return py_value{lang::value(st->s.symbol(name)), st};
+            },
+            py::arg("name"),
+            "The session's symbol of that name (real; positive once declared `positive`), even where a "
+            "variable of that name has a value (s.eval(name) gives the value).")
         .def(
             "compile",
-            [](const state_ptr& st, const py::object& expression, const py::object& inputs, const py::object& values,
-               bool stable) {
-                // the closed form: a Value, or statements whose last value is one; the inputs: names
+            [](const state_ptr& st, const py::object& expression, const py::args& args, const py::kwargs& kw) {
+                // compile(expression, inputs=(), values=None, stable=False, **parameter values): the
+                // inputs a name, a list of names or several names by position; the values a dict
+                // and/or keywords (name=value); stable=True accepted for compatibility
                 const py_value e = py::isinstance<py::str>(expression) ? eval(st, expression.cast<std::string>())
-                                                                       : expression.cast<py_value>();
+                                  : py::isinstance<py_value>(expression)
+                                      ? expression.cast<py_value>()
+                                      : py_value{from_python(expression), st};
                 std::vector<std::string> names;
-                if (py::isinstance<py::str>(inputs)) names.push_back(inputs.cast<std::string>());
-                else
-                    for (const py::handle& x : inputs) names.push_back(x.cast<std::string>());
+                py::dict values;
+                bool stable = false, have_inputs = false, have_values = false, have_stable = false;
+                const auto add_names = [&](const py::handle& x) {
+                    if (py::isinstance<py::str>(x)) return names.push_back(x.cast<std::string>());
+                    if (!py::isinstance<py::list>(x) && !py::isinstance<py::tuple>(x))
+                        throw py::type_error("compile: the inputs are names (str) or a list of names, not " +
+                                             py::str(x.get_type().attr("__name__")).cast<std::string>());
+                    for (const py::handle& y : x) {
+                        if (!py::isinstance<py::str>(y))
+                            throw py::type_error("compile: an input is a name (str), not " +
+                                                 py::str(y.get_type().attr("__name__")).cast<std::string>());
+                        names.push_back(y.cast<std::string>());
+                    }
+                };
+                const auto add_values = [&](const py::handle& x) {
+                    if (x.is_none()) return;
+                    if (!py::isinstance<py::dict>(x))
+                        throw py::type_error("compile: the values are a dict (name -> value), not " +
+                                             py::str(x.get_type().attr("__name__")).cast<std::string>());
+                    for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(x)) values[k] = v;
+                };
+                for (const py::handle& x : args) {
+                    if (!have_values && !have_stable && (py::isinstance<py::str>(x) ||
+                                                         (!have_inputs && (py::isinstance<py::list>(x) ||
+                                                                           py::isinstance<py::tuple>(x))))) {
+                        add_names(x), have_inputs = true;
+                    } else if (!have_values && !have_stable && (x.is_none() || py::isinstance<py::dict>(x))) {
+                        add_values(x), have_values = true;
+                    } else if (!have_stable && py::isinstance<py::bool_>(x)) {
+                        stable = x.cast<bool>(), have_stable = true;
+                    } else {
+                        throw py::type_error("compile: unexpected argument " + py::repr(x).cast<std::string>() +
+                                             " (compile(expression, inputs, values, **parameter values))");
+                    }
+                }
+                for (const auto& [key, x] : kw) {
+                    const std::string k = key.cast<std::string>();
+                    if (k == "inputs") {
+                        if (have_inputs) throw py::type_error("compile: the inputs are given twice");
+                        add_names(x), have_inputs = true;
+                    } else if (k == "values") {
+                        if (have_values) throw py::type_error("compile: the values are given twice");
+                        add_values(x), have_values = true;
+                    } else if (k == "stable") {
+                        stable = x.cast<bool>();
+                    }
+                }
+                for (const auto& [key, x] : kw) {
+                    const std::string k = key.cast<std::string>();
+                    if (k == "inputs" || k == "values" || k == "stable") continue;
+                    if (values.contains(key)) throw py::type_error("compile: a value for '" + k + "' is given twice");
+                    values[key] = x;
+                }
                 return compile(st, e, names, values, stable);
             },
-            py::arg("expression"), py::arg("inputs"), py::arg("values") = py::none(), py::arg("stable") = false,
+            py::arg("expression"),
+            "compile(expression, inputs=(), values=None, **parameters) -> Compiled\n\n"
             "Compiles a closed form (a Value, or statements whose last value is one) in the named "
-            "inputs (a name or a list of names: scalars; a vector input is three columns), the other "
-            "symbols given by `values` (name -> number, [x, y, z] or Value); see Compiled.__call__.");
+            "inputs (a name, a list of names, or several names by position: scalars; a vector input is "
+            "three columns), the other symbols given by `values` (a dict name -> number, [x, y, z], NumPy "
+            "array or Value) and/or by keywords: s.compile(r, 't', w0=0.38, w=[0, 0, 7.29e-5]). A name "
+            "that is no symbol of the closed form raises symrep.LanguageTypeError (a TypeError) naming "
+            "it. See Compiled.__call__.");
 
     value_class
         .def_property_readonly("text", [](const py_value& v) { return lang::print_value(v.v, false); })
@@ -647,10 +991,34 @@ PYBIND11_MODULE(_symrep, m) {
         .def(
             "to_sympy",
             [](const py::object& self) { return py::module_::import("symrep._sympy").attr("to_sympy")(self); },
-            "The value as a SymPy object, read from its printed form and checked exact: the engine compares "
-            "the SymPy result printed back with the value (==) and refuses when they differ or cannot be "
-            "compared. Lists give lists; vector expressions (x, ., |v|) and elements have no SymPy form here "
-            "(TypeError).")
+            "The value as a SymPy object by a walk of its expression tree (symrep/_sympy.py): numbers, "
+            "symbols (real, or positive as declared), +, *, ^, the elementary functions, relations, "
+            "matrices and vector literals (sympy.Matrix), lists (Python lists). What has no SymPy "
+            "counterpart (a vector expression x, ., |v|, an element, an algebra, a function SymPy lacks) "
+            "raises TypeError naming it.")
+        .def(
+            "_sympy_",
+            [](const py::object& self) { return py::module_::import("symrep._sympy").attr("to_sympy")(self); },
+            "sympy.sympify(v): the same as v.to_sympy().")
+        .def(
+            "_op",
+            [](const py_value& a, const std::string& op, const py::object& b) {
+                return binary_method(a, b, op);
+            },
+            py::arg("op"), py::arg("other"), "a op b by the language's arithmetic (op: + - * / ^ = x .).")
+        .def("_tree", [](const py_value& v) { return tree_of(v.v); },
+             "The expression tree as nested tuples (for symrep._sympy; see module.cpp, tree_of).")
+        .def("_declarations", [](const py_value& v) { return declarations_of(v.v); },
+             "(vector symbols, positive symbols) of the value, sorted: what its text needs to be read back.")
+        .def("__reduce__",
+             [](const py::object& self) {
+                 return py::module_::import("symrep._methods").attr("reduce_value")(self);
+             },
+             "Pickling: the canonical text, the kind and the declarations the text needs; see "
+             "symrep.restore_session.")
+        .def("__abs__", [](const py_value& v) { return call(v.state, "abs", {v.v}); }, "abs(v): the builtin abs.")
+        .def("__int__", &to_int, "int(v) for an exact integer (ValueError for another number, TypeError else).")
+        .def("__index__", &to_int, "operator.index(v) for an exact integer.")
         .def("__bool__", &to_bool, "Only a boolean has a truth value (TypeError otherwise).")
         .def("__float__", &to_float, "float(v) for a real number, exact or not (evalf at the session's Digits).")
         .def("__len__", [](const py_value& v) { return py::len(items(v)); })
@@ -680,21 +1048,18 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__pow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", false); })
         .def("__rpow__", [](const py_value& a, const py::object& b) { return binary(a, b, "^", true); })
         .def("__neg__", [](const py_value& a) { return engine_call(a.state, [&] { return lang::negate(a.v); }); })
-        .def("cross", [](const py_value& a, const py::object& b) { return binary(a, b, "x", false); },
-             "The cross product a x b (vectors).")
-        .def("dot", [](const py_value& a, const py::object& b) { return binary(a, b, ".", false); },
-             "The dot product a . b (vectors).")
+        .def("cross", [](const py_value& a, const py::object& b) { return binary_method(a, b, "x"); },
+             py::arg("other"), "The cross product a x b (vectors).")
+        .def("dot", [](const py_value& a, const py::object& b) { return binary_method(a, b, "."); },
+             py::arg("other"), "The dot product a . b (vectors).")
         .def("__eq__", [](const py_value& a, const py::object& b) -> py::object {
             // exact equality as the language decides it (==); an undecided comparison raises;
             // None and objects that are no values of the language are not equal
             if (b.is_none()) return py::bool_(false);
-            lang::value other;
-            try {
-                other = from_python(b);
-            } catch (const symrep::type_error&) {
-                return py::bool_(false);  // a dict, an object: no value of the language equals it
-            }
-            const py_value r = engine_call(a.state, [&] { return lang::value(lang::values_equal(a.v, other)); });
+            const std::optional<lang::value> other = try_from_python(b);
+            // a dict, an object: no value of the language equals it (a SymPy object: SymPy's ==)
+            if (!other) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            const py_value r = engine_call(a.state, [&] { return lang::value(lang::values_equal(a.v, *other)); });
             return py::bool_(r.v.as_bool());
         })
         .def("__hash__", [](const py_value& v) { return py::hash(py::str(lang::print_value(v.v, true))); })
@@ -715,17 +1080,25 @@ PYBIND11_MODULE(_symrep, m) {
         .def_property_readonly("expression", [](const compiled& c) { return c.text; })
         .def("listing", [](const compiled& c) { return c.f.listing(); })
         .def(
-            "__call__", [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, evaluation::checked); },
-            "f(t=array, ...): the values at every point, n x n_outputs (n for one output), each output "
+            "__call__",
+            [](const compiled& c, const py::args& a, const py::kwargs& kw) {
+                return evaluate(c, a, kw, evaluation::checked);
+            },
+            "f(t_array, ...) or f(t=array, ...) (the inputs by position in the order of .inputs, or by name): the values at every point, n x n_outputs (n for one output), each output "
             "proved correct to 1e-6 relative by the double program's running error bound; points where "
             "the bound does not prove it are evaluated by the stable evaluator.")
         .def(
-            "stable", [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, evaluation::stable); },
+            "stable",
+            [](const compiled& c, const py::args& a, const py::kwargs& kw) {
+                return evaluate(c, a, kw, evaluation::stable);
+            },
             "The stable evaluator (numeric/stable_evaluator.h: error bounds, binary128 and exact "
             "tiers where double cancels), point by point: every output to 1e-14 relative.")
         .def(
             "unchecked",
-            [](const compiled& c, const py::kwargs& kw) { return evaluate(c, kw, evaluation::unchecked); },
+            [](const compiled& c, const py::args& a, const py::kwargs& kw) {
+                return evaluate(c, a, kw, evaluation::unchecked);
+            },
             "The bare double program (eval_many), fastest, with no accuracy check: where the closed "
             "form cancels, its values can be wrong in every digit.");
 
@@ -733,8 +1106,10 @@ PYBIND11_MODULE(_symrep, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const symrep::error& e) {
-            py::object error = py::module_::import("symrep").attr("Error");
-            py::object x = error(e.what(), py::none(), py::none(), py::none(), py::none());
+            // symrep.<class> (error_class) without a place
+            const std::string cls = error_class(p, e.what());
+            py::object error = py::module_::import("symrep").attr(cls.c_str());
+            py::object x = error(lang::reported_message(e.what()), py::none(), py::none(), py::none(), py::none());
             PyErr_SetObject(error.ptr(), x.ptr());
         }
     });
