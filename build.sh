@@ -23,7 +23,9 @@ PACKAGES=(g++ make cmake pkg-config
           # the Python module, the Jupyter kernel and the Dask example (docs/python.md)
           pybind11-dev python3-dev python3-numpy python3-pytest python3-sympy
           python3-ipykernel python3-jupyter-client python3-nbformat python3-nbconvert
-          python3-dask python3-distributed)
+          python3-dask python3-distributed
+          # pip install . (pyproject.toml, setup.py; offline: --no-build-isolation) and its test
+          python3-setuptools python3-pip)
 
 deps() {
     local missing=()

@@ -16,6 +16,7 @@ values, with .text, .latex, .kind, Python operators and every builtin as a metho
 classes, their methods included, are defined by the compiled module (module.cpp).
 """
 
+from . import _rules  # noqa: F401  (an installed package: its rule files, SYMREP_RULES_DIR)
 from ._symrep import Compiled, Session, Value, caret_text, needs_more_input, version  # noqa: F401
 
 __all__ = ["Session", "Value", "Compiled", "Error", "version"]
