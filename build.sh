@@ -33,7 +33,10 @@ PACKAGES=(g++ make cmake pkg-config
           # progress: the tqdm bar (optional at run time) and script(1) for the terminal test (docs/progress.md)
           python3-tqdm bsdutils
           # the documentation site (bash build.sh docs; docs/build_site.py)
-          python3-sphinx python3-myst-parser python3-nbsphinx python3-sphinx-rtd-theme pandoc)
+          python3-sphinx python3-myst-parser python3-nbsphinx python3-sphinx-rtd-theme pandoc
+
+          # pip install . (pyproject.toml, setup.py; offline: --no-build-isolation) and its test
+          python3-setuptools python3-pip)
 
 deps() {
     local missing=()

@@ -35,6 +35,7 @@
 
 #include "lang/help.h"
 #include "lang/interpreter.h"
+#include "symrep/version.h"
 #include "syntax/lexer.h"
 
 namespace symrep::repl {

@@ -19,6 +19,7 @@
 
 #include "lang/interpreter.h"
 #include "syntax/lexer.h"
+#include "symrep/version.h"
 #include "interactive.h"
 
 namespace {

@@ -9,11 +9,13 @@
 
 #include <cstdio>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 
 #include "lang/interpreter.h"
 #include "syntax/parser.h"
+#include "symrep/version.h"
 #include "test_support.h"
 
 using namespace symrep::lang;
@@ -33,6 +35,25 @@ TEST(Cli, Version) {
     result r = run("--version");
     EXPECT_EQ(r.status, 0);
     EXPECT_EQ(r.out, "symrep " SYMREP_VERSION "\n");
+}
+
+// one version number: project(symrep VERSION x.y.z) in CMakeLists.txt is what symrep --version
+// prints (through the generated symrep/version.h; docs/library.md)
+TEST(Cli, VersionIsTheOneOfCMakeLists) {
+    const std::string cmake = slurp(std::string(SYMREP_SOURCE_DIR) + "/CMakeLists.txt");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(cmake, m, std::regex(R"(project\(symrep\s+VERSION\s+([0-9]+)\.([0-9]+)\.([0-9]+))")))
+        << "no project(symrep VERSION x.y.z) in CMakeLists.txt";
+    const std::string number = m[1].str() + "." + m[2].str() + "." + m[3].str();
+    result r = run("--version");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "symrep " + number + "\n");
+    EXPECT_EQ(std::string(SYMREP_VERSION), number);
+    EXPECT_EQ(SYMREP_VERSION_MAJOR, std::stoi(m[1].str()));
+    EXPECT_EQ(SYMREP_VERSION_MINOR, std::stoi(m[2].str()));
+    EXPECT_EQ(SYMREP_VERSION_PATCH, std::stoi(m[3].str()));
+    // and --help names the option
+    EXPECT_NE(run("--help").out.find("--version"), std::string::npos);
 }
 
 TEST(Cli, Help) {

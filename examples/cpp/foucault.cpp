@@ -21,12 +21,12 @@
 
 #include <ginac/ginac.h>
 
-#include "core/error.h"                 // symrep::error and its subclasses
-#include "mechanics/cauchy_problem.h"   // cauchy_problem, solve, check
-#include "mechanics/scene.h"            // parameter_values, put_values
-#include "numeric/verify.h"             // num::verify (Boost.Odeint against a closed form)
-#include "output/printer.h"             // output::print_ex: canonical, deterministic text
-#include "vector/vector.h"              // vector symbols, cross, dot, norm, equal
+#include <symrep/core/error.h>                // symrep::error and its subclasses
+#include <symrep/mechanics/cauchy_problem.h>  // cauchy_problem, solve, check
+#include <symrep/mechanics/scene.h>           // parameter_values, put_values
+#include <symrep/numeric/verify.h>            // num::verify (Boost.Odeint against a closed form)
+#include <symrep/output/printer.h>            // output::print_ex: canonical, deterministic text
+#include <symrep/vector/vector.h>             // vector symbols, cross, dot, norm, equal
 
 using GiNaC::ex;
 namespace mech = symrep::mechanics;

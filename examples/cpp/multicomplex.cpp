@@ -22,10 +22,10 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/element.h"        // symrep::element: arithmetic, inverse, exp, minpoly
-#include "algebra/multicomplex.h"   // symrep::multicomplex: the algebra and its idempotent basis
-#include "core/error.h"             // symrep::error, zero_divisor_error
-#include "output/printer.h"         // output::print_element, output::print_ex
+#include <symrep/algebra/element.h>       // symrep::element: arithmetic, inverse, exp, minpoly
+#include <symrep/algebra/multicomplex.h>  // symrep::multicomplex: the algebra and its idempotent basis
+#include <symrep/core/error.h>            // symrep::error, zero_divisor_error
+#include <symrep/output/printer.h>        // output::print_element, output::print_ex
 
 using GiNaC::ex;
 using symrep::element;

@@ -41,6 +41,7 @@
 #include "lang/statement_clock.h"
 #include "lang/values.h"
 #include "syntax/lexer.h"
+#include "symrep/version.h"
 #include "numeric/evaluator.h"
 #include "numeric/stable_evaluator.h"
 #include "vector/vector.h"

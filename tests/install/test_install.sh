@@ -3,12 +3,16 @@
 # (ctest: install.package; docs/library.md).
 #
 # Installs the built engine into a temporary prefix (cmake --install BUILD_DIR --prefix ...),
-# checks what is there (headers, libraries, rules, CMake package, pkg-config file) and what is
-# not (the internal headers, paths of the source or build tree), then builds examples/cpp
+# checks what is there (headers under include/symrep reached as <symrep/...> with PREFIX/include
+# the only include root, symrep/version.h, libraries, rules, the CMake package symrepConfig.cmake
+# and symrepConfigVersion.cmake, the pkg-config file; with the Python module: the Python package
+# and the Jupyter kernel spec, through check_python_package.py) and what is not (the internal
+# headers, paths of the source or build tree), then builds examples/cpp
 # against that prefix -- not against the build tree -- with find_package(symrep), runs both
 # programs, builds one of them again with pkg-config, and checks that a program finds the
 # installed rule files. Temporary folders are removed on exit. $CMAKE and $CXX choose cmake and
-# the compiler (ctest passes the build's own; default: cmake and g++ on PATH).
+# the compiler (ctest passes the build's own; default: cmake and g++ on PATH); $SYMREP_TEST_PYTHON
+# (set by ctest when the module is built) the interpreter that checks the Python package.
 set -euo pipefail
 
 if [[ $# -ne 2 ]]; then
@@ -30,6 +34,13 @@ fail() {
 }
 step() { echo "== $*"; }
 
+# the Python package goes to PREFIX/SYMREP_PYTHON_INSTALL_DIR: relative, or it would not land in
+# the temporary prefix
+python_dir=$(sed -n 's/^SYMREP_PYTHON_INSTALL_DIR:[A-Z]*=//p' "$build/CMakeCache.txt")
+if [[ -n ${SYMREP_TEST_PYTHON:-} && $python_dir == /* ]]; then
+    fail "SYMREP_PYTHON_INSTALL_DIR=$python_dir is absolute: this test installs into a temporary prefix only"
+fi
+
 step "cmake --install $build --prefix $prefix"
 "$cmake_bin" --install "$build" --prefix "$prefix" > "$tmp/install.log" || {
     cat "$tmp/install.log"
@@ -37,19 +48,22 @@ step "cmake --install $build --prefix $prefix"
 }
 
 # --- what is installed -------------------------------------------------------------------------
-inc=$prefix/include/symrep
+# the include root is PREFIX/include: headers are reached as <symrep/<part>/x.h>
+incroot=$prefix/include
+inc=$incroot/symrep
 engine_lib=$(find "$prefix" -name libsymrep_engine.a -print -quit)
 [[ -n $engine_lib ]] || fail "libsymrep_engine.a is not installed"
 libdir=$(dirname "$engine_lib")
 for f in "$libdir/libsymrep_interrupt.a" \
-         "$libdir/cmake/symrep/symrep-config.cmake" \
-         "$libdir/cmake/symrep/symrep-config-version.cmake" \
+         "$libdir/cmake/symrep/symrepConfig.cmake" \
+         "$libdir/cmake/symrep/symrepConfigVersion.cmake" \
          "$libdir/cmake/symrep/symrepTargets.cmake" \
          "$libdir/pkgconfig/symrep.pc" \
          "$prefix/share/symrep/rules/vector.rules" \
          "$inc/core/error.h" "$inc/core/interrupt.h" "$inc/algebra/element.h" \
          "$inc/algebra/multicomplex.h" "$inc/mechanics/cauchy_problem.h" "$inc/mechanics/operator_ode.h" \
-         "$inc/numeric/verify.h" "$inc/output/printer.h" "$inc/vector/vector.h" "$inc/lang/interpreter.h"; do
+         "$inc/numeric/verify.h" "$inc/output/printer.h" "$inc/vector/vector.h" "$inc/lang/interpreter.h" \
+         "$inc/version.h"; do
     [[ -f $f ]] || fail "not installed: ${f#"$prefix"/}"
 done
 # the program, run from the prefix: it answers and finds the installed rules (SYMREP_RULES_DIR as
@@ -80,16 +94,37 @@ while IFS= read -r h; do
         *) [[ -f $inc/$rel ]] || fail "public header not installed: $rel" ;;
     esac
 done < <(find "$src/engine" -mindepth 2 -maxdepth 2 -name '*.h' | sort)
-# every "..." include of an installed header is installed too (include root: include/symrep)
+# every "..." include of an installed header is installed too, under the include root
+# PREFIX/include ("symrep/<part>/x.h"; not "<part>/x.h", which needs include/symrep on the path)
 while IFS= read -r h; do
     while IFS= read -r dep; do
-        [[ -f $inc/$dep || -f $(dirname "$h")/$dep ]] ||
-            fail "${h#"$inc"/} includes \"$dep\", which is not installed"
+        [[ $dep == symrep/* ]] ||
+            fail "${h#"$inc"/} includes \"$dep\", not \"symrep/...\" (tests/install/rewrite_includes.py)"
+        [[ -f $incroot/$dep ]] || fail "${h#"$inc"/} includes \"$dep\", which is not installed"
     done < <(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$h")
 done < <(find "$inc" -name '*.h')
+# symrep/version.h: the number of project(VERSION) in CMakeLists.txt
+version=$(sed -n 's/^project(symrep VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")
+grep -q "^#define SYMREP_VERSION \"$version\"\$" "$inc/version.h" || fail "include/symrep/version.h does not say $version"
+grep -q "^set(PACKAGE_VERSION \"$version\")\$" "$libdir/cmake/symrep/symrepConfigVersion.cmake" ||
+    fail "symrepConfigVersion.cmake does not say $version"
+[[ $("$prefix/bin/symrep" --version) == "symrep $version" ]] || fail "bin/symrep --version: $("$prefix/bin/symrep" --version)"
+# the licence is named in the package files
+grep -q "SPDX-License-Identifier: GPL-2.0-or-later" "$libdir/cmake/symrep/symrepConfig.cmake" ||
+    fail "symrepConfig.cmake does not name the licence"
+grep -q "SPDX-License-Identifier: GPL-2.0-or-later" "$libdir/pkgconfig/symrep.pc" || fail "symrep.pc does not name the licence"
 # nothing of the source or build tree in the package files (relocatable, no SYMREP_SOURCE_DIR)
 if grep -rlF -e "$src" -e "$build" "$libdir/cmake/symrep" "$libdir/pkgconfig/symrep.pc"; then
     fail "the package files above name the source or build tree"
+fi
+
+# --- the Python package and the kernel spec (when the module is built) ---------------------------
+if [[ -n ${SYMREP_TEST_PYTHON:-} ]]; then
+    step "the Python package in $prefix/$python_dir, the kernel spec in share/jupyter/kernels/symrep"
+    "$SYMREP_TEST_PYTHON" "$src/tests/install/check_python_package.py" "$prefix/$python_dir" \
+        "$prefix/share/jupyter/kernels/symrep" "$src" "$build" || fail "the installed Python package"
+else
+    echo "== no Python module in this build: the Python package is not checked"
 fi
 
 # --- examples/cpp with find_package(symrep) -----------------------------------------------------
@@ -151,16 +186,20 @@ grep '^ok\|FAILED\|^all' "$tmp/multicomplex.out"
 if command -v pkg-config > /dev/null; then
     export PKG_CONFIG_PATH=$libdir/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}
     step "multicomplex with pkg-config: $(pkg-config --cflags --libs symrep)"
-    [[ $(pkg-config --modversion symrep) == "$(sed -n 's/^set(PACKAGE_VERSION "\(.*\)")$/\1/p' \
-        "$libdir/cmake/symrep/symrep-config-version.cmake")" ]] || fail "pkg-config and CMake disagree on the version"
+    [[ $(pkg-config --modversion symrep) == "$version" ]] || fail "pkg-config's version is not $version"
+    # (the relocatable prefix is spelled through ${pcfiledir}/../..: compare the folders themselves)
+    pc_includes=$(for flag in $(pkg-config --cflags-only-I symrep); do realpath -m "${flag#-I}"; done)
+    grep -qxF "$(realpath "$incroot")" <<< "$pc_includes" && ! grep -qxF "$(realpath "$inc")" <<< "$pc_includes" ||
+        fail "pkg-config's include path is not PREFIX/include alone: $(pkg-config --cflags-only-I symrep)"
     # shellcheck disable=SC2046  # the flags are words
     "$cxx" -std=c++20 -O1 "$src/examples/cpp/multicomplex.cpp" -o "$tmp/multicomplex_pc" \
         $(pkg-config --cflags --libs symrep) || fail "compiling multicomplex.cpp with pkg-config"
     run multicomplex_pc "$tmp/multicomplex_pc"
 
-    # every installed header, in one translation unit, with the package's flags only (each one
-    # alone costs a minute on two cores; together they take seconds)
-    (cd "$inc" && find . -name '*.h' | sed 's|^\./||' | sort | sed 's|.*|#include "&"|') > "$tmp/all_headers.cpp"
+    # every installed header, in one translation unit, as a user includes it (<symrep/...>) with
+    # the package's flags only (each one alone costs a minute on two cores; together they take
+    # seconds)
+    (cd "$incroot" && find symrep -name '*.h' | sort | sed 's|.*|#include <&>|') > "$tmp/all_headers.cpp"
     # shellcheck disable=SC2046
     "$cxx" -std=c++20 -fsyntax-only "$tmp/all_headers.cpp" $(pkg-config --cflags symrep) ||
         fail "the installed headers do not compile together with pkg-config's flags"
@@ -175,8 +214,8 @@ if command -v pkg-config > /dev/null; then
     [[ -f $rulesdir/vector.rules ]] || fail "pkg-config's rulesdir $rulesdir has no vector.rules"
     cat > "$tmp/rules_check.cpp" << 'EOF'
 #include <iostream>
-#include "core/error.h"
-#include "rules/rules.h"
+#include <symrep/core/error.h>
+#include <symrep/rules/rules.h>
 int main() {
     try {
         const auto& r = symrep::rules::default_rules();

@@ -18,6 +18,7 @@ this file defines the exceptions (Error and its subclasses, one per typed except
 the engine, core/error.h) and the session that values without one belong to.
 """
 
+from . import _rules  # noqa: F401  (an installed package: its rule files, SYMREP_RULES_DIR)
 import threading
 from fractions import Fraction
 from typing import List, Optional, Union
