@@ -1,11 +1,11 @@
 // symrep/algebra/algebra.cpp -- coordinate-vector helpers shared by all algebras.
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 #include <sstream>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "core/interrupt.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
 
 namespace symrep {
 

@@ -1,13 +1,13 @@
 // symrep/algebra/algebra_general.cpp -- the general methods of II.1-II.2 that
 // every algebra gets from its product alone: the canonical matrix, determinant,
 // characteristic and minimal polynomials, zero-divisor test and inverse.
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
-#include "algebra/exact_linear.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

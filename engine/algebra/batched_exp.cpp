@@ -1,5 +1,5 @@
 // symrep/algebra/batched_exp.cpp -- see batched_exp.h.
-#include "algebra/batched_exp.h"
+#include "symrep/algebra/batched_exp.h"
 
 #include <cmath>
 

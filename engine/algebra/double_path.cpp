@@ -1,7 +1,7 @@
 // symrep/algebra/double_path.cpp -- see double_path.h.
-#include "algebra/double_path.h"
+#include "symrep/algebra/double_path.h"
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep::double_path {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep::double_path {
 

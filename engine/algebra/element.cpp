@@ -1,9 +1,9 @@
 // symrep/algebra/element.cpp
-#include "algebra/element.h"
+#include "symrep/algebra/element.h"
 
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

@@ -6,7 +6,7 @@
 // families are used automatically.
 #pragma once
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep {
 

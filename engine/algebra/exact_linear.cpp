@@ -1,11 +1,11 @@
 // symrep/algebra/exact_linear.cpp -- exact Gaussian elimination (see exact_linear.h).
-#include "algebra/exact_linear.h"
+#include "symrep/algebra/exact_linear.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep {
 

@@ -19,12 +19,12 @@
 #include <map>
 #include <sstream>
 
-#include "algebra/algebra.h"
-#include "scalar/cplx.h"
-#include "scalar/polynomial_roots.h"
-#include "algebra/exact_linear.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/algebra/algebra.h"
+#include "symrep/scalar/cplx.h"
+#include "symrep/scalar/polynomial_roots.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

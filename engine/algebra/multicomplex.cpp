@@ -1,17 +1,17 @@
 // symrep/algebra/multicomplex.cpp -- the exact multicomplex algebra (III.1).
-#include "algebra/multicomplex.h"
+#include "symrep/algebra/multicomplex.h"
 
 #include <algorithm>
 #include <sstream>
 
-#include "algebra/double_path.h"
-#include "algebra/multicomplex_double.h"
-#include "algebra/multicomplex_indexing.h"
-#include "algebra/multicomplex_transform.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/algebra/double_path.h"
+#include "symrep/algebra/multicomplex_double.h"
+#include "symrep/algebra/multicomplex_indexing.h"
+#include "symrep/algebra/multicomplex_transform.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

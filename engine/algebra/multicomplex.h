@@ -39,8 +39,8 @@
 
 #include <memory>
 
-#include "algebra/algebra.h"
-#include "scalar/cplx.h"
+#include "symrep/algebra/algebra.h"
+#include "symrep/scalar/cplx.h"
 
 namespace symrep {
 

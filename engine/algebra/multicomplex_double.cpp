@@ -1,16 +1,16 @@
 // symrep/algebra/multicomplex_double.cpp -- the double-precision multicomplex path.
-#include "algebra/multicomplex_double.h"
+#include "symrep/algebra/multicomplex_double.h"
 
-#include "algebra/batched_exp.h"
+#include "symrep/algebra/batched_exp.h"
 
 #include <algorithm>
 #include <mutex>
 #include <sstream>
 #include <unistd.h>
 
-#include "algebra/multicomplex_indexing.h"
-#include "algebra/multicomplex_transform.h"
-#include "core/error.h"
+#include "symrep/algebra/multicomplex_indexing.h"
+#include "symrep/algebra/multicomplex_transform.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

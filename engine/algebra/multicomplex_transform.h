@@ -18,9 +18,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "scalar/cplx.h"
-#include "scalar/scalar.h"
-#include "algebra/walsh_hadamard.h"
+#include "symrep/scalar/cplx.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/algebra/walsh_hadamard.h"
 
 namespace symrep {
 

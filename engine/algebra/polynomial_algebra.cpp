@@ -1,10 +1,10 @@
 // symrep/algebra/polynomial_algebra.cpp -- P_n = R[X]/(p) with the cyclic basis.
-#include "algebra/polynomial_algebra.h"
+#include "symrep/algebra/polynomial_algebra.h"
 
 #include <sstream>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

@@ -1,11 +1,11 @@
 // symrep/algebra/polynomial_structure.cpp -- Thm III.4.1 and the power basis (III.4.4).
-#include "algebra/polynomial_structure.h"
+#include "symrep/algebra/polynomial_structure.h"
 
 #include <cstdlib>
 
-#include "algebra/exact_linear.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

@@ -24,7 +24,7 @@
 #include <cstddef>
 #include <string>
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep {
 

@@ -1,15 +1,15 @@
 // symrep/algebra/sobrero.cpp -- the generalized Sobrero algebra (III.2).
-#include "algebra/sobrero.h"
+#include "symrep/algebra/sobrero.h"
 
 #include <sstream>
 
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "algebra/double_path.h"
-#include "algebra/sobrero_kernel.h"
-#include "algebra/walsh_double.h"
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/algebra/double_path.h"
+#include "symrep/algebra/sobrero_kernel.h"
+#include "symrep/algebra/walsh_double.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

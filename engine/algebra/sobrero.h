@@ -26,7 +26,7 @@
 //   generating_element (III.4.10): alpha j + beta eps, default alpha = beta = 1
 #pragma once
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep {
 

@@ -17,8 +17,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "scalar/cplx.h"
-#include "scalar/scalar.h"
+#include "symrep/scalar/cplx.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::sobrero_math {
 

@@ -1,13 +1,13 @@
 // symrep/algebra/structure_algebra.cpp -- algebras from structure constants (II.1.2).
-#include "algebra/structure_algebra.h"
+#include "symrep/algebra/structure_algebra.h"
 
 #include <cstdint>
 #include <cstdio>
 #include <sstream>
 
-#include "algebra/exact_linear.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

@@ -1,15 +1,15 @@
 // symrep/algebra/walsh.cpp -- the Walsh algebra W (III.3.1-III.3.3).
-#include "algebra/walsh.h"
+#include "symrep/algebra/walsh.h"
 
 #include <sstream>
 
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "algebra/double_path.h"
-#include "algebra/walsh_double.h"
-#include "algebra/walsh_kernel.h"
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/algebra/double_path.h"
+#include "symrep/algebra/walsh_double.h"
+#include "symrep/algebra/walsh_kernel.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

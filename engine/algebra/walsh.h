@@ -15,7 +15,7 @@
 // a_p > 0 (Thm III.3.3.1, III.3.40; otherwise domain_error pointing to walsh_complex).
 #pragma once
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep {
 

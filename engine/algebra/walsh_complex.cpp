@@ -1,16 +1,16 @@
 // symrep/algebra/walsh_complex.cpp -- the complex extension W* (III.3.45-67).
-#include "algebra/walsh_complex.h"
+#include "symrep/algebra/walsh_complex.h"
 
 #include <sstream>
 
-#include "scalar/cplx.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "algebra/double_path.h"
-#include "algebra/walsh_double.h"
-#include "algebra/walsh_kernel.h"
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/scalar/cplx.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/algebra/double_path.h"
+#include "symrep/algebra/walsh_double.h"
+#include "symrep/algebra/walsh_kernel.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

@@ -14,7 +14,7 @@
 // divisors of rank p (y_p = 0).
 #pragma once
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep {
 

@@ -1,15 +1,15 @@
 // symrep/algebra/walsh_double.cpp -- double-precision W, W* and S (see walsh_double.h).
-#include "algebra/walsh_double.h"
+#include "symrep/algebra/walsh_double.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "scalar/cplx.h"
-#include "algebra/batched_exp.h"
-#include "algebra/sobrero_kernel.h"
-#include "algebra/walsh_kernel.h"
-#include "core/error.h"
+#include "symrep/scalar/cplx.h"
+#include "symrep/algebra/batched_exp.h"
+#include "symrep/algebra/sobrero_kernel.h"
+#include "symrep/algebra/walsh_kernel.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

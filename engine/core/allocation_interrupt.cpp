@@ -22,8 +22,8 @@
 #include <cstdlib>
 #include <new>
 
-#include "core/error.h"
-#include "core/interrupt.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
 
 namespace {
 

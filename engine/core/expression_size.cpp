@@ -1,5 +1,5 @@
 // symrep/core/expression_size.cpp
-#include "core/expression_size.h"
+#include "symrep/core/expression_size.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <sstream>
 #include <vector>
 
-#include "core/error.h"
-#include "core/interrupt.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
 
 namespace symrep {
 

@@ -11,7 +11,7 @@
 #include <chrono>
 #include <new>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

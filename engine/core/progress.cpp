@@ -1,5 +1,5 @@
 // symrep/core/progress.cpp -- see progress.h.
-#include "core/progress.h"
+#include "symrep/core/progress.h"
 
 #include <unistd.h>
 

@@ -1,7 +1,7 @@
 // symrep/identification/identify.cpp -- the identification procedure of IV.2.3, its
 // integral-form variant, the forward model and the baseline of regression on derivatives.
-#include "identification/identify.h"
-#include "identification/identify_detail.h"
+#include "symrep/identification/identify.h"
+#include "symrep/identification/identify_detail.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,11 @@
 
 #include <Eigen/Dense>
 
-#include "core/error.h"
-#include "core/progress.h"
-#include "identification/operational_matrix.h"
-#include "identification/walsh_series.h"
-#include "numeric/integrate.h"
+#include "symrep/core/error.h"
+#include "symrep/core/progress.h"
+#include "symrep/identification/operational_matrix.h"
+#include "symrep/identification/walsh_series.h"
+#include "symrep/numeric/integrate.h"
 
 namespace symrep::identification {
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/Dense>
 
-#include "identification/identify.h"
+#include "symrep/identification/identify.h"
 
 namespace symrep::identification::detail {
 

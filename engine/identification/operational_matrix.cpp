@@ -1,14 +1,14 @@
 // symrep/identification/operational_matrix.cpp -- P (IV.2.19), Q (IV.2.21), powers of Q.
-#include "identification/operational_matrix.h"
+#include "symrep/identification/operational_matrix.h"
 
 #include <complex>
 #include <string>
 
 #include <unsupported/Eigen/FFT>
 
-#include "core/error.h"
-#include "core/progress.h"
-#include "identification/walsh_series.h"
+#include "symrep/core/error.h"
+#include "symrep/core/progress.h"
+#include "symrep/identification/walsh_series.h"
 
 namespace symrep::identification {
 

@@ -1,6 +1,6 @@
 // symrep/identification/sindy.cpp -- the cross-validated SINDy pipeline (sindy.h): Savitzky-Golay
 // derivatives, STLSQ, the window and the threshold by blocked cross-validation.
-#include "identification/sindy.h"
+#include "symrep/identification/sindy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 
 #include <Eigen/Dense>
 
-#include "core/error.h"
-#include "identification/identify_detail.h"
+#include "symrep/core/error.h"
+#include "symrep/identification/identify_detail.h"
 
 namespace symrep::identification {
 

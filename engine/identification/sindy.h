@@ -21,7 +21,7 @@
 #pragma once
 #include <vector>
 
-#include "identification/identify.h"
+#include "symrep/identification/identify.h"
 
 namespace symrep::identification {
 

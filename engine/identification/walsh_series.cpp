@@ -1,5 +1,5 @@
 // symrep/identification/walsh_series.cpp -- truncated Walsh series (IV.2.1).
-#include "identification/walsh_series.h"
+#include "symrep/identification/walsh_series.h"
 
 #include <algorithm>
 #include <bit>
@@ -8,9 +8,9 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "algebra/walsh_hadamard.h"
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/algebra/walsh_hadamard.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::identification {
 

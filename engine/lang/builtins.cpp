@@ -1,5 +1,5 @@
 // symrep/lang/builtins.cpp -- the builtin registry and argument checking.
-#include "lang/builtins.h"
+#include "symrep/lang/builtins.h"
 
 #include <memory>
 

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "lang/value.h"
+#include "symrep/core/error.h"
+#include "symrep/lang/value.h"
 
 namespace symrep::lang {
 

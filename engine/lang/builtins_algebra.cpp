@@ -5,11 +5,11 @@
 #include <climits>
 #include <cstdint>
 
-#include "scalar/scalar.h"
-#include "lang/builtins.h"
-#include "output/printer.h"
-#include "core/expression_size.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/output/printer.h"
+#include "symrep/core/expression_size.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::lang {
 

@@ -2,8 +2,8 @@
 // Markdown reference generated from the registry (`symrep --doc`).
 #include <sstream>
 
-#include "lang/builtins.h"
-#include "lang/interpreter.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/interpreter.h"
 
 namespace symrep::lang {
 

@@ -8,14 +8,14 @@
 #include <sstream>
 #include <iostream>
 
-#include "scalar/scalar.h"
-#include "lang/builtins.h"
-#include "vector/vector.h"
-#include "numeric/reference.h"
-#include "lang/interpreter.h"
-#include "output/printer.h"
-#include "lang/print_value.h"
-#include "core/expression_size.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/vector/vector.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/lang/interpreter.h"
+#include "symrep/output/printer.h"
+#include "symrep/lang/print_value.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep::lang {
 

@@ -11,9 +11,9 @@
 #include <complex>
 #include <sstream>
 
-#include "scalar/scalar.h"
-#include "lang/builtins.h"
-#include "lang/interpreter.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/interpreter.h"
 
 namespace symrep::lang {
 

@@ -9,19 +9,19 @@
 #include <string>
 #include <vector>
 
-#include "algebra/walsh_hadamard.h"
-#include "core/error.h"
-#include "numeric/reference.h"
-#include "scalar/scalar.h"
-#include "identification/identify.h"
-#include "identification/operational_matrix.h"
-#include "identification/sindy.h"
-#include "identification/walsh_series.h"
-#include "lang/builtins.h"
-#include "lang/values.h"
-#include "numeric/evaluator.h"
-#include "output/formats.h"
-#include "output/printer.h"
+#include "symrep/algebra/walsh_hadamard.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/identification/identify.h"
+#include "symrep/identification/operational_matrix.h"
+#include "symrep/identification/sindy.h"
+#include "symrep/identification/walsh_series.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/values.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/output/formats.h"
+#include "symrep/output/printer.h"
 
 namespace symrep::lang {
 

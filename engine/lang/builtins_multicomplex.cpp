@@ -4,9 +4,9 @@
 // registered in builtins_algebra.cpp and dispatch to multicomplex's overrides.
 #include <climits>
 
-#include "algebra/multicomplex.h"
-#include "algebra/multicomplex_indexing.h"
-#include "lang/builtins.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/algebra/multicomplex_indexing.h"
+#include "symrep/lang/builtins.h"
 
 namespace symrep::lang {
 

@@ -3,10 +3,10 @@
 #include <string>
 #include <vector>
 
-#include "lang/builtins.h"
-#include "lang/print_value.h"
-#include "output/formats.h"
-#include "vector/vector.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/print_value.h"
+#include "symrep/output/formats.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::lang {
 

@@ -10,14 +10,14 @@
 #include <cmath>
 #include <sstream>
 
-#include "scalar/scalar.h"
-#include "lang/builtins.h"
-#include "lang/interpreter.h"
-#include "output/printer.h"
-#include "lang/values.h"
-#include "numeric/evaluator.h"
-#include "output/plot.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/interpreter.h"
+#include "symrep/output/printer.h"
+#include "symrep/lang/values.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/output/plot.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::lang {
 

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "algebra/polynomial_algebra.h"
-#include "algebra/polynomial_structure.h"
-#include "algebra/structure_algebra.h"
-#include "lang/builtins.h"
-#include "numeric/reference.h"
+#include "symrep/algebra/polynomial_algebra.h"
+#include "symrep/algebra/polynomial_structure.h"
+#include "symrep/algebra/structure_algebra.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/numeric/reference.h"
 
 namespace symrep::lang {
 

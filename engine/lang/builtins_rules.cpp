@@ -5,12 +5,12 @@
 //   rules()                        lists the rules
 #include <filesystem>
 
-#include "scalar/scalar.h"
-#include "lang/builtins.h"
-#include "lang/interpreter.h"
-#include "output/printer.h"
-#include "rules/rules.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/interpreter.h"
+#include "symrep/output/printer.h"
+#include "symrep/rules/rules.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::lang {
 

@@ -4,16 +4,16 @@
 #include <string>
 #include <vector>
 
-#include "algebra/polynomial_algebra.h"
-#include "algebra/sobrero.h"
-#include "lang/builtins.h"
-#include "algebra/multicomplex.h"
-#include "signals/modulation.h"
-#include "signals/product.h"
-#include "signals/multicomplex_signals.h"
-#include "signals/representation.h"
-#include "signals/response.h"
-#include "signals/z_transform.h"
+#include "symrep/algebra/polynomial_algebra.h"
+#include "symrep/algebra/sobrero.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/signals/modulation.h"
+#include "symrep/signals/product.h"
+#include "symrep/signals/multicomplex_signals.h"
+#include "symrep/signals/representation.h"
+#include "symrep/signals/response.h"
+#include "symrep/signals/z_transform.h"
 
 namespace symrep::lang {
 

@@ -5,9 +5,9 @@
 // the overrides of class sobrero and are registered with the generic algebra builtins.
 #include <memory>
 
-#include "algebra/sobrero.h"
-#include "lang/builtins.h"
-#include "signals/sobrero_subalgebra.h"
+#include "symrep/algebra/sobrero.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/signals/sobrero_subalgebra.h"
 
 namespace symrep::lang {
 

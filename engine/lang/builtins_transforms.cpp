@@ -4,17 +4,17 @@
 #include <string>
 #include <vector>
 
-#include "lang/builtins.h"
-#include "lang/values.h"
-#include "core/error.h"
-#include "transforms/laplace.h"
-#include "transforms/inversion.h"
-#include "transforms/sampled.h"
-#include "transforms/algebra_inversion.h"
-#include "transforms/distribution.h"
-#include "transforms/monogenic.h"
-#include "transforms/parseval.h"
-#include "transforms/signal_transform.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/lang/values.h"
+#include "symrep/core/error.h"
+#include "symrep/transforms/laplace.h"
+#include "symrep/transforms/inversion.h"
+#include "symrep/transforms/sampled.h"
+#include "symrep/transforms/algebra_inversion.h"
+#include "symrep/transforms/distribution.h"
+#include "symrep/transforms/monogenic.h"
+#include "symrep/transforms/parseval.h"
+#include "symrep/transforms/signal_transform.h"
 
 namespace symrep::lang {
 

@@ -5,9 +5,9 @@
 // classes walsh and walsh_complex and are registered with the generic algebra builtins.
 #include <memory>
 
-#include "algebra/walsh.h"
-#include "algebra/walsh_complex.h"
-#include "lang/builtins.h"
+#include "symrep/algebra/walsh.h"
+#include "symrep/algebra/walsh_complex.h"
+#include "symrep/lang/builtins.h"
 
 namespace symrep::lang {
 

@@ -1,7 +1,7 @@
 // symrep/lang/evaluate.cpp -- evaluation of syntax nodes: names, calls of builtins, operators, indexing.
-#include "lang/interpreter.h"
-#include "core/interrupt.h"
-#include "lang/statement_clock.h"
+#include "symrep/lang/interpreter.h"
+#include "symrep/core/interrupt.h"
+#include "symrep/lang/statement_clock.h"
 
 #include <algorithm>
 #include <functional>
@@ -11,12 +11,12 @@
 #include <iostream>
 #include <sstream>
 
-#include "scalar/scalar.h"
-#include "syntax/parser.h"
-#include "output/printer.h"
-#include "vector/vector.h"
-#include "lang/print_value.h"
-#include "output/formats.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/syntax/parser.h"
+#include "symrep/output/printer.h"
+#include "symrep/vector/vector.h"
+#include "symrep/lang/print_value.h"
+#include "symrep/output/formats.h"
 
 namespace symrep::lang {
 

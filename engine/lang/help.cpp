@@ -1,5 +1,5 @@
 // symrep/lang/help.cpp -- help texts and completion candidates (lang/help.h).
-#include "lang/help.h"
+#include "symrep/lang/help.h"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "lang/interpreter.h"
+#include "symrep/lang/interpreter.h"
 
 namespace symrep::lang {
 

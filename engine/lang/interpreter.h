@@ -24,13 +24,13 @@
 #include <string>
 #include <vector>
 
-#include "syntax/ast.h"
-#include "lang/builtins.h"
-#include "core/error.h"
-#include "core/interrupt.h"
-#include "lang/value.h"
-#include "scalar/equality.h"
-#include "vector/vector.h"
+#include "symrep/syntax/ast.h"
+#include "symrep/lang/builtins.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
+#include "symrep/lang/value.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::rules {
 class rule_set;

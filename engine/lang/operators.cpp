@@ -1,7 +1,7 @@
 // symrep/lang/operators.cpp -- the operators of the language on values: arithmetic, vector products, comparison (negate, binary_op, values_equal).
-#include "lang/interpreter.h"
-#include "core/interrupt.h"
-#include "lang/statement_clock.h"
+#include "symrep/lang/interpreter.h"
+#include "symrep/core/interrupt.h"
+#include "symrep/lang/statement_clock.h"
 
 #include <algorithm>
 #include <functional>
@@ -11,14 +11,14 @@
 #include <iostream>
 #include <map>
 
-#include "scalar/floats.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "syntax/parser.h"
-#include "output/printer.h"
-#include "vector/vector.h"
-#include "lang/print_value.h"
-#include "output/formats.h"
+#include "symrep/scalar/floats.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/syntax/parser.h"
+#include "symrep/output/printer.h"
+#include "symrep/vector/vector.h"
+#include "symrep/lang/print_value.h"
+#include "symrep/output/formats.h"
 
 namespace symrep::lang {
 

@@ -1,8 +1,8 @@
 // symrep/lang/print_value.cpp -- values as text and LaTeX (see print_value.h).
-#include "lang/print_value.h"
+#include "symrep/lang/print_value.h"
 
-#include "output/formats.h"
-#include "output/printer.h"
+#include "symrep/output/formats.h"
+#include "symrep/output/printer.h"
 
 namespace symrep::lang {
 

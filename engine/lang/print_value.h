@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "lang/value.h"
+#include "symrep/lang/value.h"
 
 namespace symrep::lang {
 

@@ -1,10 +1,10 @@
 // symrep/lang/statement_clock.cpp -- the statement clock and error translation (see statement_clock.h).
-#include "lang/statement_clock.h"
+#include "symrep/lang/statement_clock.h"
 
 #include <new>
 
-#include "core/error.h"
-#include "core/interrupt.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
 
 namespace symrep::lang {
 extern const char* const out_of_memory_message;

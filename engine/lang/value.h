@@ -15,10 +15,10 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/element.h"
-#include "core/error.h"
-#include "mechanics/cauchy_problem.h"
-#include "mechanics/reduced_solution.h"
+#include "symrep/algebra/element.h"
+#include "symrep/core/error.h"
+#include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/reduced_solution.h"
 
 namespace symrep::lang {
 

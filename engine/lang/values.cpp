@@ -1,16 +1,16 @@
 // symrep/lang/values.cpp -- numeric values for symbols (see values.h); moved from
 // builtins_mechanics.cpp, shared by eval, verify, plot, trajectory and hodograph.
-#include "lang/values.h"
+#include "symrep/lang/values.h"
 
 #include <set>
 
-#include "numeric/reference.h"
-#include "scalar/limit.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/scalar/limit.h"
 
-#include "scalar/scalar.h"
-#include "output/printer.h"
-#include "vector/vector.h"
-#include "lang/print_value.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/output/printer.h"
+#include "symrep/vector/vector.h"
+#include "symrep/lang/print_value.h"
 
 namespace symrep::lang {
 

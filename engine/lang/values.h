@@ -15,7 +15,7 @@
 
 #include <ginac/ginac.h>
 
-#include "lang/builtins.h"
+#include "symrep/lang/builtins.h"
 
 namespace symrep::lang {
 

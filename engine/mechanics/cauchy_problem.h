@@ -39,8 +39,8 @@
 
 #include <ginac/ginac.h>
 
-#include "mechanics/operator_ode.h"
-#include "scalar/floats.h"
+#include "symrep/mechanics/operator_ode.h"
+#include "symrep/scalar/floats.h"
 
 namespace symrep::mechanics {
 

@@ -3,17 +3,17 @@
 // 47-57, 62-67, 68-86) and recombined coordinate-free, x = sum_P c_0 P + c_1 w x P +
 // c_2 w x (w x P) (vector_solution); the fixed-axis (VI.2), turning-frame (VI.3) and velocity
 // (VI.2.50-52) readings handed to their solvers; solve()'s witness (solution_witness.h).
-#include "mechanics/cauchy_problem.h"
-#include "mechanics/fixed_axis.h"
-#include "mechanics/turning_frame.h"
-#include "mechanics/solution_witness.h"
+#include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/fixed_axis.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/mechanics/solution_witness.h"
 
 #include <algorithm>
 #include <map>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -1,11 +1,11 @@
 // symrep/mechanics/first_integrals.cpp -- vector first integrals and generalized potentials
 // (first_integrals.h).
-#include "mechanics/first_integrals.h"
+#include "symrep/mechanics/first_integrals.h"
 
-#include "core/error.h"
-#include "mechanics/fixed_axis.h"
-#include "mechanics/turning_frame.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/mechanics/fixed_axis.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

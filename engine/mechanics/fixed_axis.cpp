@@ -1,18 +1,18 @@
 // symrep/mechanics/fixed_axis.cpp -- reduction of a fixed-axis rotating-frame
 // problem to the inertial one (fixed_axis.h; thesis VI.2).
-#include "mechanics/fixed_axis.h"
+#include "symrep/mechanics/fixed_axis.h"
 
-#include "numeric/quadrature.h"
+#include "symrep/numeric/quadrature.h"
 
 #include <algorithm>
 #include <map>
 
-#include "core/error.h"
-#include "mechanics/quasi_polynomial.h"
-#include "mechanics/turning_frame.h"
-#include "scalar/scalar.h"
-#include "scalar/rational_integral.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/mechanics/quasi_polynomial.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/scalar/rational_integral.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -41,7 +41,7 @@
 
 #include <ginac/ginac.h>
 
-#include "mechanics/cauchy_problem.h"
+#include "symrep/mechanics/cauchy_problem.h"
 
 namespace symrep::mechanics {
 

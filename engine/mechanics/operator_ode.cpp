@@ -1,12 +1,12 @@
 // symrep/mechanics/operator_ode.cpp -- the solver of operator_ode.h.
-#include "mechanics/operator_ode.h"
+#include "symrep/mechanics/operator_ode.h"
 
 #include <map>
 
-#include "algebra/exact_linear.h"
-#include "scalar/polynomial_roots.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/scalar/polynomial_roots.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep::mechanics {
 

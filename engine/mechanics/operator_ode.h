@@ -48,8 +48,8 @@
 
 #include <ginac/ginac.h>
 
-#include "mechanics/quasi_polynomial.h"
-#include "mechanics/rotation_operator_algebra.h"
+#include "symrep/mechanics/quasi_polynomial.h"
+#include "symrep/mechanics/rotation_operator_algebra.h"
 
 namespace symrep::mechanics {
 

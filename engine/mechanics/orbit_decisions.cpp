@@ -1,14 +1,14 @@
 // symrep/mechanics/orbit_decisions.cpp -- bounded and planar orbits (orbit_decisions.h).
-#include "mechanics/orbit_decisions.h"
+#include "symrep/mechanics/orbit_decisions.h"
 
 #include <cmath>
 
-#include "core/error.h"
-#include "mechanics/first_integrals.h"
-#include "mechanics/turning_frame.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/mechanics/first_integrals.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -22,8 +22,8 @@
 
 #include <ginac/ginac.h>
 
-#include "mechanics/cauchy_problem.h"
-#include "mechanics/scene.h"
+#include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/scene.h"
 
 namespace symrep::mechanics {
 

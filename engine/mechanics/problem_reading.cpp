@@ -3,20 +3,20 @@
 // (thesis VI.1.26-38), and read_problem(), the reading made once when a problem is posed:
 // that operator form, or a rotating frame about a fixed axis (fixed_axis.h, VI.2), a turning
 // frame (turning_frame.h, VI.3), or the velocity problem v = x' (VI.2.50-52).
-#include "mechanics/cauchy_problem.h"
-#include "mechanics/fixed_axis.h"
-#include "mechanics/turning_frame.h"
-#include "mechanics/quasi_polynomial.h"
+#include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/fixed_axis.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/mechanics/quasi_polynomial.h"
 
 #include <algorithm>
 #include <map>
 #include <optional>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "numeric/quadrature.h"
-#include "numeric/reference.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -8,14 +8,14 @@
 //       = e^{mu t} sum_{i=0}^{n} C(n,i) (-1)^i t^{n-i} int_0^t tau^{m+i} e^{(lambda-mu) tau} dtau
 //   (binomial expansion of (t - tau)^n), so resonance lambda = mu is the lambda = 0 case
 //   of the integral and produces the secular powers of t exactly.
-#include "mechanics/quasi_polynomial.h"
+#include "symrep/mechanics/quasi_polynomial.h"
 
 #include <algorithm>
 
-#include "scalar/equality.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep::mechanics {
 

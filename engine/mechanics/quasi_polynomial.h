@@ -35,7 +35,7 @@
 
 #include <ginac/ginac.h>
 
-#include "scalar/cplx.h"
+#include "symrep/scalar/cplx.h"
 
 namespace symrep::mechanics {
 

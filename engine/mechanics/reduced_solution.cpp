@@ -1,14 +1,14 @@
 // symrep/mechanics/reduced_solution.cpp -- numeric evaluation of r = F_(-w)(psi)
 // (reduced_solution.h; thesis VI.3.2.1).
-#include "mechanics/reduced_solution.h"
+#include "symrep/mechanics/reduced_solution.h"
 
 #include <cmath>
 
-#include "core/error.h"
-#include "numeric/evaluator.h"
-#include "numeric/integrate.h"
-#include "numeric/reference.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/numeric/integrate.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -17,9 +17,9 @@
 
 #include <ginac/ginac.h>
 
-#include "mechanics/rotating_frame.h"
-#include "mechanics/scene.h"
-#include "mechanics/turning_frame.h"
+#include "symrep/mechanics/rotating_frame.h"
+#include "symrep/mechanics/scene.h"
+#include "symrep/mechanics/turning_frame.h"
 
 namespace symrep::mechanics {
 

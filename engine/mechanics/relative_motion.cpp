@@ -1,16 +1,16 @@
 // symrep/mechanics/relative_motion.cpp -- exact relative orbital motion and the
 // Clohessy-Wiltshire model (see relative_motion.h).
-#include "mechanics/relative_motion.h"
+#include "symrep/mechanics/relative_motion.h"
 
 #include <cmath>
 
 #include <Eigen/LU>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "core/error.h"
-#include "numeric/integrate.h"
-#include "numeric/kepler.h"
-#include "numeric/kepler_universal.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/integrate.h"
+#include "symrep/numeric/kepler.h"
+#include "symrep/numeric/kepler_universal.h"
 
 namespace symrep::mechanics {
 

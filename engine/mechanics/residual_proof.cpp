@@ -1,7 +1,7 @@
 // symrep/mechanics/residual_proof.cpp -- the zero proofs of check() (residual_proof.h): in the
 // algebra of K, coordinate-free on quasi-polynomial coefficients, and with integral objects.
-#include "mechanics/residual_proof.h"
-#include "mechanics/quasi_polynomial.h"
+#include "symrep/mechanics/residual_proof.h"
+#include "symrep/mechanics/quasi_polynomial.h"
 
 #include <algorithm>
 #include <array>
@@ -10,10 +10,10 @@
 #include <optional>
 #include <set>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "numeric/quadrature.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -1,11 +1,11 @@
 // symrep/mechanics/rotating_frame.cpp -- reduction of rotating-frame central-field
 // problems to the inertial problem (see rotating_frame.h).
-#include "mechanics/rotating_frame.h"
+#include "symrep/mechanics/rotating_frame.h"
 
 #include <cmath>
 
-#include "core/error.h"
-#include "numeric/kepler.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/kepler.h"
 
 namespace symrep::mechanics {
 

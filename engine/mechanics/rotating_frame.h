@@ -30,8 +30,8 @@
 
 #include <Eigen/Core>
 
-#include "numeric/integrate.h"
-#include "numeric/rotation_tensor.h"
+#include "symrep/numeric/integrate.h"
+#include "symrep/numeric/rotation_tensor.h"
 
 namespace symrep::mechanics {
 

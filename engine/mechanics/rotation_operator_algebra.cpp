@@ -1,8 +1,8 @@
 // symrep/mechanics/rotation_operator_algebra.cpp -- K = w x as P(X^3 + Omega^2 X).
-#include "mechanics/rotation_operator_algebra.h"
+#include "symrep/mechanics/rotation_operator_algebra.h"
 
-#include "scalar/scalar.h"
-#include "core/error.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
 
 namespace symrep::mechanics {
 

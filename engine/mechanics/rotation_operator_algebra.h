@@ -22,9 +22,9 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/element.h"
-#include "algebra/polynomial_algebra.h"
-#include "mechanics/quasi_polynomial.h"
+#include "symrep/algebra/element.h"
+#include "symrep/algebra/polynomial_algebra.h"
+#include "symrep/mechanics/quasi_polynomial.h"
 
 namespace symrep::mechanics {
 

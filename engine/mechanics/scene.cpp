@@ -1,20 +1,20 @@
 // symrep/mechanics/scene.cpp -- the smallest exact model of a scene (scene.h).
-#include "mechanics/scene.h"
-#include "mechanics/solution_witness.h"
+#include "symrep/mechanics/scene.h"
+#include "symrep/mechanics/solution_witness.h"
 
-#include "mechanics/fixed_axis.h"
-#include "mechanics/turning_frame.h"
-#include "numeric/quadrature.h"
+#include "symrep/mechanics/fixed_axis.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/numeric/quadrature.h"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <functional>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "numeric/reference.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -4,18 +4,18 @@
 // nonzero at one point (the point of solve()'s witness, solution_witness.h), else compared
 // by components (vector.h); with floating-point numbers, what is left may be rounding
 // (rounding_tolerance()).
-#include "mechanics/cauchy_problem.h"
-#include "mechanics/residual_proof.h"
-#include "mechanics/solution_witness.h"
+#include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/residual_proof.h"
+#include "symrep/mechanics/solution_witness.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "numeric/quadrature.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -1,6 +1,6 @@
 // symrep/mechanics/solution_witness.cpp -- the residual of a candidate solution at one point
 // (solution_witness.h; issue 27).
-#include "mechanics/solution_witness.h"
+#include "symrep/mechanics/solution_witness.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <set>
 #include <sstream>
 
-#include "core/error.h"
-#include "numeric/quadrature.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

@@ -26,7 +26,7 @@
 
 #include <ginac/ginac.h>
 
-#include "mechanics/cauchy_problem.h"
+#include "symrep/mechanics/cauchy_problem.h"
 
 namespace symrep::mechanics {
 

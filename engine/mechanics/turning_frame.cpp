@@ -1,18 +1,18 @@
 // symrep/mechanics/turning_frame.cpp -- the reading of rotating-frame problems
 // and their reduction to the inertial problem (turning_frame.h; thesis VI.2-VI.3).
-#include "mechanics/turning_frame.h"
+#include "symrep/mechanics/turning_frame.h"
 
-#include "numeric/quadrature.h"
-#include "mechanics/fixed_axis.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/mechanics/fixed_axis.h"
 
 #include <algorithm>
 #include <map>
 
-#include "core/error.h"
-#include "mechanics/quasi_polynomial.h"
-#include "scalar/floats.h"
-#include "scalar/scalar.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/mechanics/quasi_polynomial.h"
+#include "symrep/scalar/floats.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

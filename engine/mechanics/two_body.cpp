@@ -1,11 +1,11 @@
 // symrep/mechanics/two_body.cpp -- the two-body problem's global characteristics (two_body.h).
-#include "mechanics/two_body.h"
+#include "symrep/mechanics/two_body.h"
 
 #include <map>
 
-#include "core/error.h"
-#include "mechanics/first_integrals.h"
-#include "vector/vector.h"
+#include "symrep/core/error.h"
+#include "symrep/mechanics/first_integrals.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 

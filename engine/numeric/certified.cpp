@@ -1,5 +1,5 @@
 // symrep/numeric/certified.cpp -- see certified.h.
-#include "numeric/certified.h"
+#include "symrep/numeric/certified.h"
 
 #include <cln/exception.h>
 #include <cln/float.h>
@@ -12,8 +12,8 @@
 #include <limits>
 #include <unordered_map>
 
-#include "core/error.h"
-#include "numeric/reference.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/reference.h"
 
 namespace symrep::num {
 

@@ -1,5 +1,5 @@
 // symrep/numeric/compile.cpp -- compilation of closed forms to a register program, and its listing (see evaluator.h).
-#include "numeric/evaluator.h"
+#include "symrep/numeric/evaluator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "core/error.h"
-#include "numeric/certified.h"
-#include "numeric/reference.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/certified.h"
+#include "symrep/numeric/reference.h"
 
 namespace symrep::num {
 

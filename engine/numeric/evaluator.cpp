@@ -1,5 +1,5 @@
 // symrep/numeric/evaluator.cpp -- execution of a compiled program: one point, blocks of points, 3-vectors (see evaluator.h).
-#include "numeric/evaluator.h"
+#include "symrep/numeric/evaluator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "core/error.h"
-#include "numeric/reference.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/reference.h"
 
 namespace symrep::num {
 

@@ -1,5 +1,5 @@
 // symrep/numeric/integrate.cpp -- see integrate.h.
-#include "numeric/integrate.h"
+#include "symrep/numeric/integrate.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,9 +9,9 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "core/error.h"
-#include "core/interrupt.h"
-#include "core/progress.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
+#include "symrep/core/progress.h"
 
 namespace symrep::num {
 

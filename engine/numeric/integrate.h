@@ -33,7 +33,7 @@
 #include <Eigen/Core>
 #include <ginac/ginac.h>
 
-#include "numeric/evaluator.h"
+#include "symrep/numeric/evaluator.h"
 
 namespace symrep::num {
 

@@ -1,12 +1,12 @@
 // symrep/numeric/kepler.cpp -- Kepler's problem by universal variables (see kepler.h).
-#include "numeric/kepler.h"
+#include "symrep/numeric/kepler.h"
 
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "core/error.h"
-#include "numeric/kepler_universal.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/kepler_universal.h"
 
 namespace symrep::num {
 

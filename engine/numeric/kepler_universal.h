@@ -18,7 +18,7 @@
 
 #include <boost/math/constants/constants.hpp>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep::num {
 

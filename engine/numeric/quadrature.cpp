@@ -1,6 +1,6 @@
 // symrep/numeric/quadrature.cpp -- integral objects, nested ones included, by one march of
 // Chebyshev panels (quadrature.h, quadrature_chain.h).
-#include "numeric/quadrature.h"
+#include "symrep/numeric/quadrature.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "numeric/evaluator.h"
-#include "numeric/quadrature_chain.h"
-#include "numeric/reference.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/numeric/quadrature_chain.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::num {
 

@@ -1,5 +1,5 @@
 // symrep/numeric/quadrature_chain.cpp -- see quadrature_chain.h.
-#include "numeric/quadrature_chain.h"
+#include "symrep/numeric/quadrature_chain.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <utility>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep::num {
 

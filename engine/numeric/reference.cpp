@@ -1,8 +1,8 @@
 // symrep/numeric/reference.cpp -- see reference.h.
-#include "numeric/reference.h"
-#include "numeric/quadrature.h"
-#include "numeric/certified.h"
-#include "scalar/floats.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/numeric/certified.h"
+#include "symrep/scalar/floats.h"
 
 #include <cln/float.h>
 #include <cln/complex.h>
@@ -14,8 +14,8 @@
 #include <limits>
 #include <sstream>
 
-#include "core/error.h"
-#include "scalar/limit.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/limit.h"
 
 namespace symrep::num {
 

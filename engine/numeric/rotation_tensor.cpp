@@ -1,15 +1,15 @@
 // symrep/numeric/rotation_tensor.cpp -- Q' = -W Q on SO(3) by a sixth-order
 // Magnus method (see rotation_tensor.h).
-#include "numeric/rotation_tensor.h"
+#include "symrep/numeric/rotation_tensor.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "core/error.h"
-#include "core/interrupt.h"
-#include "core/progress.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
+#include "symrep/core/progress.h"
 
 namespace symrep::num {
 

@@ -1,5 +1,5 @@
 // symrep/numeric/spectral_evaluator.cpp -- see spectral_evaluator.h.
-#include "numeric/spectral_evaluator.h"
+#include "symrep/numeric/spectral_evaluator.h"
 
 #include <algorithm>
 #include <cln/float.h>
@@ -8,8 +8,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "core/error.h"
-#include "numeric/reference.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/reference.h"
 
 namespace symrep::num {
 

@@ -1,5 +1,5 @@
 // symrep/numeric/stable_evaluator.cpp -- see stable_evaluator.h.
-#include "numeric/stable_evaluator.h"
+#include "symrep/numeric/stable_evaluator.h"
 
 #include <cln/float.h>
 #include <cln/real.h>
@@ -9,9 +9,9 @@
 #include <limits>
 #include <type_traits>
 
-#include "core/error.h"
-#include "numeric/certified.h"
-#include "numeric/reference.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/certified.h"
+#include "symrep/numeric/reference.h"
 
 namespace symrep::num {
 

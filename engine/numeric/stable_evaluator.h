@@ -56,7 +56,7 @@
 
 #include <ginac/ginac.h>
 
-#include "numeric/evaluator.h"
+#include "symrep/numeric/evaluator.h"
 
 namespace symrep::num {
 

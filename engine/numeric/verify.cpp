@@ -1,5 +1,5 @@
 // symrep/numeric/verify.cpp -- see verify.h.
-#include "numeric/verify.h"
+#include "symrep/numeric/verify.h"
 
 #include <chrono>
 #include <algorithm>
@@ -7,8 +7,8 @@
 #include <limits>
 #include <string>
 
-#include "core/error.h"
-#include "core/progress.h"
+#include "symrep/core/error.h"
+#include "symrep/core/progress.h"
 
 namespace symrep::num {
 

@@ -22,9 +22,9 @@
 
 #include <ginac/ginac.h>
 
-#include "numeric/evaluator.h"
-#include "numeric/integrate.h"
-#include "numeric/stable_evaluator.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/numeric/integrate.h"
+#include "symrep/numeric/stable_evaluator.h"
 
 namespace symrep::num {
 

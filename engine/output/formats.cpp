@@ -5,14 +5,14 @@
 #include <regex>
 #include <sstream>
 
-#include "output/formats.h"
+#include "symrep/output/formats.h"
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
-#include "output/printer.h"
-#include "output/precedence.h"
-#include "scalar/floats.h"
-#include "vector/vector.h"
+#include "symrep/output/printer.h"
+#include "symrep/output/precedence.h"
+#include "symrep/scalar/floats.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::output {
 

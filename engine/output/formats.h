@@ -10,7 +10,7 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/element.h"
+#include "symrep/algebra/element.h"
 
 namespace symrep::output {
 

@@ -1,5 +1,5 @@
 // symrep/output/plot.cpp -- gnuplot driver (see plot.h).
-#include "output/plot.h"
+#include "symrep/output/plot.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -21,7 +21,7 @@
 
 #include <Eigen/Dense>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 extern char** environ;
 

@@ -1,10 +1,10 @@
 // symrep/output/printer.cpp -- canonical printing (see printer.h for the rules).
-#include "output/printer.h"
-#include "output/precedence.h"
+#include "symrep/output/printer.h"
+#include "symrep/output/precedence.h"
 
-#include "scalar/floats.h"
-#include "scalar/scalar.h"
-#include "vector/vector.h"
+#include "symrep/scalar/floats.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/vector/vector.h"
 
 #include <algorithm>
 #include <map>

@@ -25,7 +25,7 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/element.h"
+#include "symrep/algebra/element.h"
 
 namespace symrep::output {
 

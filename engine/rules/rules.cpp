@@ -1,6 +1,6 @@
 // symrep/rules/rules.cpp -- rule files, the matcher and the rewriter.
-#include "rules/rules.h"
-#include "core/interrupt.h"
+#include "symrep/rules/rules.h"
+#include "symrep/core/interrupt.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,9 +11,9 @@
 #include <mutex>
 #include <sstream>
 
-#include "scalar/scalar.h"
-#include "syntax/parser.h"
-#include "vector/vector.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/syntax/parser.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::rules {
 

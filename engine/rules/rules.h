@@ -37,7 +37,7 @@
 
 #include <ginac/ginac.h>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep::rules {
 

@@ -1,14 +1,14 @@
 // symrep/scalar/equality.cpp -- the three-valued zero decision (see equality.h).
-#include "scalar/equality.h"
+#include "symrep/scalar/equality.h"
 
 #include <cstdint>
 #include <map>
 #include <sstream>
 #include <vector>
 
-#include "core/error.h"
-#include "core/interrupt.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/core/interrupt.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep {
 

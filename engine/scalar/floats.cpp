@@ -1,5 +1,5 @@
 // symrep/scalar/floats.cpp -- the one model of floats (floats.h).
-#include "scalar/floats.h"
+#include "symrep/scalar/floats.h"
 
 #include <cln/complex.h>
 #include <cln/float.h>

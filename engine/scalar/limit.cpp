@@ -1,5 +1,5 @@
 // symrep/scalar/limit.cpp -- the limit at a removable singularity (see limit.h).
-#include "scalar/limit.h"
+#include "symrep/scalar/limit.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
-#include "core/error.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep {
 

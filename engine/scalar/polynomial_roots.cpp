@@ -1,11 +1,11 @@
 // symrep/scalar/polynomial_roots.cpp -- see polynomial_roots.h.
-#include "scalar/polynomial_roots.h"
+#include "symrep/scalar/polynomial_roots.h"
 
 #include <map>
 
-#include "core/error.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep {
 

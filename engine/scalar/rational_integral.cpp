@@ -1,6 +1,6 @@
 // symrep/scalar/rational_integral.cpp -- int_0^t of a rational function by partial
 // fractions over Q[x] (scalar/rational_integral.h).
-#include "scalar/rational_integral.h"
+#include "symrep/scalar/rational_integral.h"
 
 #include <vector>
 

@@ -20,7 +20,7 @@
 #include <vector>
 #include <ginac/ginac.h>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep {
 

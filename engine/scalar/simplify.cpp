@@ -1,7 +1,7 @@
 // symrep/scalar/simplify.cpp -- tidy, trigonometric signs, arctangents, exp and log of scalars (scalar.h).
-#include "scalar/scalar.h"
-#include "scalar/small_primes.h"
-#include "scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/scalar/small_primes.h"
+#include "symrep/scalar/equality.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

@@ -1,6 +1,6 @@
 // symrep/scalar/small_primes.cpp -- the factors of an integer over the primes below 2^16
 // (small_primes.h), shared by the radicals and logarithms of rationals.
-#include "scalar/small_primes.h"
+#include "symrep/scalar/small_primes.h"
 
 #include <algorithm>
 #include <map>

@@ -4,7 +4,7 @@
 #include <functional>
 #include <map>
 
-#include "scalar/scalar.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep {
 

@@ -1,6 +1,6 @@
 // symrep/scalar/zero_test.cpp -- the exact zero test and the forms it reduces to (scalar.h).
-#include "scalar/scalar.h"
-#include "scalar/small_primes.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/scalar/small_primes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "core/expression_size.h"
+#include "symrep/core/error.h"
+#include "symrep/core/expression_size.h"
 
 namespace symrep {
 

@@ -1,9 +1,9 @@
 // symrep/signals/modulation.cpp -- see modulation.h.
-#include "signals/modulation.h"
+#include "symrep/signals/modulation.h"
 
-#include "algebra/sobrero.h"
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/algebra/sobrero.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::signals {
 

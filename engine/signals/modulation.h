@@ -13,8 +13,8 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/algebra.h"
-#include "signals/representation.h"
+#include "symrep/algebra/algebra.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::signals {
 

@@ -1,10 +1,10 @@
 // symrep/signals/multicomplex_signals.cpp -- see multicomplex_signals.h.
-#include "signals/multicomplex_signals.h"
+#include "symrep/signals/multicomplex_signals.h"
 
 #include <map>
 
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::signals {
 

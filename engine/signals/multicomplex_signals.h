@@ -26,10 +26,10 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/multicomplex.h"
-#include "scalar/equality.h"
-#include "signals/modulation.h"
-#include "signals/representation.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/signals/modulation.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::signals {
 

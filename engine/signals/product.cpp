@@ -1,8 +1,8 @@
 // symrep/signals/product.cpp -- see product.h.
-#include "signals/product.h"
+#include "symrep/signals/product.h"
 
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::signals {
 

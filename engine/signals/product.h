@@ -13,8 +13,8 @@
 
 #include <memory>
 
-#include "algebra/structure_algebra.h"
-#include "signals/representation.h"
+#include "symrep/algebra/structure_algebra.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::signals {
 

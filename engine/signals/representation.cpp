@@ -1,21 +1,21 @@
 // symrep/signals/representation.cpp -- see representation.h.
-#include "signals/representation.h"
+#include "symrep/signals/representation.h"
 
 #include <cmath>
 #include <map>
 #include <sstream>
 
-#include "algebra/exact_linear.h"
-#include "algebra/multicomplex.h"
-#include "algebra/polynomial_algebra.h"
-#include "algebra/sobrero.h"
-#include "core/error.h"
-#include "scalar/equality.h"
-#include "scalar/polynomial_roots.h"
-#include "scalar/scalar.h"
-#include "signals/multicomplex_signals.h"
-#include "signals/product.h"
-#include "signals/sampling_numeric.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/algebra/polynomial_algebra.h"
+#include "symrep/algebra/sobrero.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/polynomial_roots.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/signals/multicomplex_signals.h"
+#include "symrep/signals/product.h"
+#include "symrep/signals/sampling_numeric.h"
 
 namespace symrep::signals {
 

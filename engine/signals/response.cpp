@@ -1,5 +1,5 @@
 // symrep/signals/response.cpp -- see response.h.
-#include "signals/response.h"
+#include "symrep/signals/response.h"
 
 #include <algorithm>
 #include <string>
@@ -7,13 +7,13 @@
 #include <utility>
 #include <vector>
 
-#include "core/error.h"
-#include "algebra/exact_linear.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "algebra/multicomplex.h"
-#include "signals/multicomplex_signals.h"
-#include "signals/representation.h"
+#include "symrep/core/error.h"
+#include "symrep/algebra/exact_linear.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/signals/multicomplex_signals.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::signals {
 

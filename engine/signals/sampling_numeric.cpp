@@ -1,5 +1,5 @@
 // symrep/signals/sampling_numeric.cpp -- see sampling_numeric.h.
-#include "signals/sampling_numeric.h"
+#include "symrep/signals/sampling_numeric.h"
 
 #include <cmath>
 #include <complex>
@@ -12,10 +12,10 @@
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 
-#include "core/error.h"
-#include "numeric/reference.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::signals {
 

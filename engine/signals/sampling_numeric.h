@@ -19,7 +19,7 @@
 
 #include <ginac/ginac.h>
 
-#include "signals/representation.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::signals {
 

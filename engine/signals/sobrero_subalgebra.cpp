@@ -1,10 +1,10 @@
 // symrep/signals/sobrero_subalgebra.cpp -- see sobrero_subalgebra.h.
-#include "signals/sobrero_subalgebra.h"
+#include "symrep/signals/sobrero_subalgebra.h"
 
-#include "algebra/sobrero.h"
-#include "core/error.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
+#include "symrep/algebra/sobrero.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::signals {
 

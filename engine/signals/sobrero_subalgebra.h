@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep::signals {
 

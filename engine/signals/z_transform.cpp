@@ -1,8 +1,8 @@
 // symrep/signals/z_transform.cpp -- see z_transform.h.
-#include "signals/z_transform.h"
+#include "symrep/signals/z_transform.h"
 
-#include "scalar/scalar.h"
-#include "signals/representation.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::signals {
 

@@ -1,5 +1,5 @@
 // symrep/syntax/lexer.cpp
-#include "syntax/lexer.h"
+#include "symrep/syntax/lexer.h"
 
 #include <cctype>
 

@@ -1,5 +1,5 @@
 // symrep/syntax/parser.cpp
-#include "syntax/parser.h"
+#include "symrep/syntax/parser.h"
 
 #include <cstring>
 

@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "syntax/ast.h"
-#include "core/error.h"
-#include "syntax/lexer.h"
+#include "symrep/syntax/ast.h"
+#include "symrep/core/error.h"
+#include "symrep/syntax/lexer.h"
 
 namespace symrep::lang {
 

@@ -1,16 +1,16 @@
 // symrep/transforms/algebra_inversion.cpp -- see algebra_inversion.h.
-#include "transforms/algebra_inversion.h"
+#include "symrep/transforms/algebra_inversion.h"
 
 #include <algorithm>
 
-#include "algebra/multicomplex.h"
-#include "algebra/sobrero.h"
-#include "core/error.h"
-#include "scalar/equality.h"
-#include "scalar/scalar.h"
-#include "signals/representation.h"
-#include "transforms/distribution.h"
-#include "transforms/laplace.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/algebra/sobrero.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/signals/representation.h"
+#include "symrep/transforms/distribution.h"
+#include "symrep/transforms/laplace.h"
 
 namespace symrep::transforms {
 

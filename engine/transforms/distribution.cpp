@@ -1,8 +1,8 @@
 // symrep/transforms/distribution.cpp -- see distribution.h.
-#include "transforms/distribution.h"
+#include "symrep/transforms/distribution.h"
 
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::transforms {
 

@@ -15,7 +15,7 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/algebra.h"
+#include "symrep/algebra/algebra.h"
 
 namespace symrep::transforms {
 

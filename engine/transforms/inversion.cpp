@@ -1,5 +1,5 @@
 // symrep/transforms/inversion.cpp -- the inversion integral (V.2.36-39) by Ooura-Mori quadrature.
-#include "transforms/inversion.h"
+#include "symrep/transforms/inversion.h"
 
 #include <cmath>
 #include <complex>
@@ -10,8 +10,8 @@
 #include <boost/math/quadrature/exp_sinh.hpp>
 #include <boost/math/quadrature/ooura_fourier_integrals.hpp>
 
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::transforms {
 

@@ -1,15 +1,15 @@
 // symrep/transforms/laplace.cpp -- see laplace.h.
-#include "transforms/laplace.h"
+#include "symrep/transforms/laplace.h"
 
 #include <algorithm>
 #include <sstream>
 
-#include "algebra/polynomial_algebra.h"
-#include "core/error.h"
-#include "scalar/equality.h"
-#include "scalar/polynomial_roots.h"
-#include "scalar/scalar.h"
-#include "signals/representation.h"
+#include "symrep/algebra/polynomial_algebra.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/equality.h"
+#include "symrep/scalar/polynomial_roots.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/signals/representation.h"
 
 namespace symrep::transforms {
 

@@ -1,10 +1,10 @@
 // symrep/transforms/monogenic.cpp -- see monogenic.h.
-#include "transforms/monogenic.h"
+#include "symrep/transforms/monogenic.h"
 
 #include <algorithm>
 
-#include "core/error.h"
-#include "scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 
 namespace symrep::transforms {
 

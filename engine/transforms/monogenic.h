@@ -14,8 +14,8 @@
 
 #include <string>
 
-#include "algebra/algebra.h"
-#include "scalar/equality.h"
+#include "symrep/algebra/algebra.h"
+#include "symrep/scalar/equality.h"
 
 namespace symrep::transforms {
 

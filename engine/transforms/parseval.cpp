@@ -1,14 +1,14 @@
 // symrep/transforms/parseval.cpp -- see parseval.h.
-#include "transforms/parseval.h"
+#include "symrep/transforms/parseval.h"
 
 #include <bit>
 
-#include "algebra/multicomplex.h"
-#include "core/error.h"
-#include "scalar/scalar.h"
-#include "signals/representation.h"
-#include "transforms/inversion.h"
-#include "transforms/laplace.h"
+#include "symrep/algebra/multicomplex.h"
+#include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/signals/representation.h"
+#include "symrep/transforms/inversion.h"
+#include "symrep/transforms/laplace.h"
 
 namespace symrep::transforms {
 

@@ -23,8 +23,8 @@
 
 #include <ginac/ginac.h>
 
-#include "algebra/algebra.h"
-#include "scalar/equality.h"
+#include "symrep/algebra/algebra.h"
+#include "symrep/scalar/equality.h"
 
 namespace symrep::transforms {
 

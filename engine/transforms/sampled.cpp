@@ -1,10 +1,10 @@
 // symrep/transforms/sampled.cpp -- see sampled.h.
-#include "transforms/sampled.h"
+#include "symrep/transforms/sampled.h"
 
 #include <cmath>
 #include <unsupported/Eigen/FFT>
 
-#include "core/error.h"
+#include "symrep/core/error.h"
 
 namespace symrep::transforms {
 

@@ -1,16 +1,16 @@
 // symrep/transforms/signal_transform.cpp -- see signal_transform.h.
-#include "transforms/signal_transform.h"
+#include "symrep/transforms/signal_transform.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
 
-#include "core/error.h"
-#include "numeric/quadrature.h"
-#include "scalar/scalar.h"
-#include "signals/representation.h"
-#include "transforms/distribution.h"
+#include "symrep/core/error.h"
+#include "symrep/numeric/quadrature.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/signals/representation.h"
+#include "symrep/transforms/distribution.h"
 
 namespace symrep::transforms {
 

@@ -29,7 +29,7 @@
 // Impulses c delta^(k)(t - a) (distribution.h) add c d^k e^(-a d).
 #pragma once
 
-#include "transforms/laplace.h"
+#include "symrep/transforms/laplace.h"
 
 namespace symrep::transforms {
 

@@ -19,10 +19,10 @@
 #include <map>
 #include <string>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "vector/vector.h"
-#include "vector/vector_internal.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/vector/vector.h"
+#include "symrep/vector/vector_internal.h"
 
 namespace symrep {
 

@@ -14,8 +14,8 @@
 #include <algorithm>
 #include <sstream>
 
-#include "vector/vector.h"
-#include "vector/vector_internal.h"
+#include "symrep/vector/vector.h"
+#include "symrep/vector/vector_internal.h"
 
 namespace symrep {
 

@@ -1,16 +1,16 @@
 // symrep/vector/vector.cpp -- the vector registry, cross/dot/triple with their
 // cheap eval rules, the vector/scalar check, d/dt and component substitution.
 // See vector.h for the representation.
-#include "vector/vector.h"
+#include "symrep/vector/vector.h"
 
 #include <algorithm>
 #include <list>
 #include <mutex>
 #include <random>
 
-#include "scalar/scalar.h"
-#include "core/error.h"
-#include "vector/vector_internal.h"
+#include "symrep/scalar/scalar.h"
+#include "symrep/core/error.h"
+#include "symrep/vector/vector_internal.h"
 
 namespace symrep {
 

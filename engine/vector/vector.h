@@ -54,7 +54,7 @@
 #include <vector>
 #include <ginac/ginac.h>
 
-#include "scalar/equality.h"
+#include "symrep/scalar/equality.h"
 
 namespace symrep {
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <ginac/ginac.h>
 
-#include "vector/vector.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::detail {
 
