@@ -171,7 +171,7 @@ void session::report(const source_location& where, const std::string& message) {
     ++failures_;
     const std::string msg = reported_message(message);
     if (opts_.stop_on_error) stopped_ = true;
-    reported_error r{msg, where, {}};
+    reported_error r{msg, where, {}, std::current_exception()};  // null outside a handler
     if (auto it = sources_.find(where.file); it != sources_.end()) {
         const int first = source_line_.count(where.file) ? source_line_[where.file] : 1;
         if (where.line >= first) r.source_line = source_line(it->second, where.line - first + 1);

@@ -123,6 +123,7 @@ public:
         std::string message;
         source_location where;
         std::string source_line;
+        std::exception_ptr original;  ///< the exception reported (its type: the Python class), or null
     };
     /// Every error reported so far, in order (errors().size() == failures()).
     const std::vector<reported_error>& errors() const { return errors_; }

@@ -116,9 +116,9 @@ std::string error_class(const std::exception_ptr& p, const std::string& message)
     }
 }
 
-// Raises symrep.<cls>(message, file, line, column, source line); no place when line is 0.
-[[noreturn]] void raise_error(const std::string& cls, const std::string& message, const std::string& file, int line,
-                              int column, const std::string& source_line, const std::exception_ptr& p = nullptr) {
+// The exception symrep.<cls>(message, file, line, column, source line); no place when line is 0.
+py::object error_object(const std::string& cls, const std::string& message, const std::string& file, int line,
+                        int column, const std::string& source_line, const std::exception_ptr& p = nullptr) {
     // the bytes the program prints (lang::reported_message: long numbers shortened, controls escaped)
     const std::string shown = lang::reported_message(message);
     py::object error = py::module_::import("symrep").attr(cls.c_str());
@@ -130,7 +130,14 @@ std::string error_class(const std::exception_ptr& p, const std::string& message)
             e.attr("ranks") = py::cast(z.ranks);  // the vanishing idempotent components (III.1.55)
         } catch (...) {
         }
-    PyErr_SetObject(error.ptr(), e.ptr());
+    return e;
+}
+
+// Raises error_object(...).
+[[noreturn]] void raise_error(const std::string& cls, const std::string& message, const std::string& file, int line,
+                              int column, const std::string& source_line, const std::exception_ptr& p = nullptr) {
+    py::object e = error_object(cls, message, file, line, column, source_line, p);
+    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(e.ptr())), e.ptr());
     throw py::error_already_set();
 }
 
@@ -281,7 +288,10 @@ std::optional<lang::value> try_from_python(const py::handle& x) {
 // call (lang/evaluate.cpp, session::call): the name (lang/help.h's message, with the names
 // near it), the number of arguments (the same message as session::call's: the engine has no
 // call on values of its own yet).
-py_value call(const state_ptr& st, const std::string& name, const std::vector<lang::value>& args) {
+// name(args..., option = value...): the options (view = "3d") as the language passes them to a
+// builtin that declares them (lang::builtin::options, context::named_options)
+py_value call(const state_ptr& st, const std::string& name, const std::vector<lang::value>& args,
+              const std::vector<std::pair<std::string, lang::value>>& options = {}) {
     return engine_call(st, [&]() -> lang::value {
         const lang::builtin* b = st->s.builtins().find(name);
         if (!b) throw symrep::type_error(lang::unknown_builtin_message(st->s.builtins(), name));
@@ -298,8 +308,28 @@ py_value call(const state_ptr& st, const std::string& name, const std::vector<la
             throw symrep::type_error(b->name + ": expects " + expected + " argument" + (expected == "1" ? "" : "s") +
                                      ", got " + std::to_string(args.size()) + " (usage: " + b->signature + ")");
         }
+        for (const auto& o : options)
+            if (std::find(b->options.begin(), b->options.end(), o.first) == b->options.end()) {
+                std::string known;
+                for (const std::string& k : b->options) known += (known.empty() ? "" : ", ") + k;
+                throw symrep::type_error(b->name + ": no option " + o.first +
+                                         (known.empty() ? " (it takes none)" : " (its options: " + known + ")"));
+            }
+        struct options_scope {  // as lang::session::call_builtin: the options of this call only
+            lang::context& c;
+            std::vector<std::pair<std::string, lang::value>> saved;
+            ~options_scope() { c.named_options = std::move(saved); }
+        } scope{st->s, std::move(st->s.named_options)};
+        st->s.named_options = options;
         return b->fn(args, st->s);
     });
+}
+
+// the keyword arguments of s.call / v.call as named options
+std::vector<std::pair<std::string, lang::value>> options_of(const py::kwargs& kwargs) {
+    std::vector<std::pair<std::string, lang::value>> o;
+    for (const auto& [k, x] : kwargs) o.emplace_back(py::str(k).cast<std::string>(), from_python(x));
+    return o;
 }
 
 // a op b by the language's arithmetic (lang::binary_op), Python's operands in either order;
@@ -629,12 +659,12 @@ py::object builtin_method(const py::object& self, const std::string& name) {
     return py::module_::import("symrep._methods").attr("bound_builtin")(self, name);
 }
 
-// (signature, help text, min_args, max_args (-1: any number)) of a builtin, or None
+// (signature, help text, min_args, max_args (-1: any number), option names) of a builtin, or None
 py::object builtin_info(const state_ptr& st, const std::string& name) {
     const lang::builtin* b = st->s.builtins().find(name);
     if (!b) return py::none();
     return py::make_tuple(b->signature, lang::help_text(st->s.builtins(), name), b->min_args,
-                          b->max_args == SIZE_MAX ? -1 : py::ssize_t(b->max_args));
+                          b->max_args == SIZE_MAX ? -1 : py::ssize_t(b->max_args), b->options);
 }
 
 // The expression tree of a value for symrep._sympy (a walk, not a printed text): nested tuples
@@ -791,7 +821,7 @@ PYBIND11_MODULE(_symrep, m) {
             "run",
             [](const state_ptr& st, const std::string& code, const std::string& name) {
                 // the events of a cell in order: ("text", str), ("result", Value), ("file", path),
-                // ("error", (message, file, line, column, source line)); stops at the first error
+                // ("error", the symrep.Error subclass eval would raise); stops at the first error
                 std::vector<std::tuple<std::string, std::string, lang::value,
                                        lang::session::reported_error>> events;
                 auto flush = [&] {
@@ -821,15 +851,18 @@ PYBIND11_MODULE(_symrep, m) {
                     if (kind == "text" || kind == "file") out.append(py::make_tuple(kind, text));
                     else if (kind == "result") out.append(py::make_tuple(kind, py_value{v, st}));
                     else
-                        out.append(py::make_tuple(kind, py::make_tuple(e.message, e.where.file, e.where.line,
-                                                                       e.where.column, e.source_line)));
+                        // the exception Session.eval would raise (its class from the engine's type)
+                        out.append(py::make_tuple(kind, error_object(error_class(e.original, e.message), e.message,
+                                                                     e.where.file, e.where.line, e.where.column,
+                                                                     e.source_line, e.original)));
                 }
                 return out;
             },
             py::arg("code"), py::arg("name") = "<cell>",
             "Runs a cell statement by statement, as the interactive prompt does, up to its first "
             "error; returns its events in order: ('text', printed text), ('result', Value), "
-            "('file', path of a picture written), ('error', (message, file, line, column, source line)).")
+            "('file', path of a picture written), ('error', the symrep.Error (subclass) Session.eval would raise, "
+            "with .message, .file, .line, .column, .source_line).")
         .def(
             "get",
             [](const state_ptr& st, const std::string& name) -> py::object {
@@ -847,12 +880,14 @@ PYBIND11_MODULE(_symrep, m) {
         .def("variables", [](const state_ptr& st) { return st->s.variable_names(); }, "The names of the variables.")
         .def(
             "call",
-            [](const state_ptr& st, const std::string& name, const py::args& args) {
+            [](const state_ptr& st, const std::string& name, const py::args& args, const py::kwargs& kwargs) {
                 std::vector<lang::value> a;
                 for (const py::handle& x : args) a.push_back(from_python(x));
-                return call(st, name, a);
+                return call(st, name, a, options_of(kwargs));
             },
-            py::arg("name"), "Calls a builtin with Python arguments: s.call('inverse', w).")
+            py::arg("name"),
+            "Calls a builtin with Python arguments: s.call('inverse', w); keyword arguments are the "
+            "builtin's options: s.call('trajectory', r, values, t, 'r.svg', view='3d').")
         .def(
             "completions",
             [](const state_ptr& st, const std::string& prefix, bool commands) {
@@ -1066,12 +1101,14 @@ PYBIND11_MODULE(_symrep, m) {
         .def("__hash__", [](const py_value& v) { return py::hash(py::str(lang::print_value(v.v, true))); })
         .def(
             "call",
-            [](const py_value& v, const std::string& name, const py::args& args) {
+            [](const py_value& v, const std::string& name, const py::args& args, const py::kwargs& kwargs) {
                 std::vector<lang::value> a{v.v};
                 for (const py::handle& x : args) a.push_back(from_python(x));
-                return call(v.state, name, a);
+                return call(v.state, name, a, options_of(kwargs));
             },
-            py::arg("name"), "name(self, args...): v.call('inverse') is inverse(v).");
+            py::arg("name"),
+            "name(self, args..., option=value...): v.call('inverse') is inverse(v); keyword "
+            "arguments are the builtin's options (view='3d').");
 
     compiled_class
         .def_property_readonly("inputs", [](const compiled& c) { return c.names; })

@@ -279,3 +279,27 @@ def test_compile_takes_keywords_and_positional_inputs(s):
         new(t, t)
     with pytest.raises(TypeError, match="'z' is not an input"):
         new(t, z=t)
+
+
+def test_builtin_options_are_keyword_arguments(tmp_path):
+    # the language's trajectory(r, values, t = [0, 6], "f.svg", view = "3d") from Python:
+    # options are keyword-only in the signature, reach the builtin, and unknown ones are refused
+    s = symrep.Session()
+    s.eval("vector w, r0")
+    r = s.eval("rotation_operator(w, t, r0)")
+    sig = inspect.signature(r.trajectory)
+    assert sig.parameters["view"].kind == inspect.Parameter.KEYWORD_ONLY
+    values, span = s.eval("[w = [0, 0, 1], r0 = [1, 0, 1]]"), s.eval("t = [0, 6]")
+    top, box = str(tmp_path / "top.svg"), str(tmp_path / "box.svg")
+    r.trajectory(values, span, top)
+    r.trajectory(values, span, box, view="3d")
+    s.eval('trajectory(rotation_operator(w, t, r0), [w = [0, 0, 1], r0 = [1, 0, 1]], t = [0, 6], "%s", view = "3d")'
+           % str(tmp_path / "lang.svg"))
+    with open(box) as f, open(str(tmp_path / "lang.svg")) as g:
+        assert f.read() == g.read()  # the same picture as the language's call
+    with open(top) as f, open(box) as g:
+        assert f.read() != g.read()  # the option changed the view
+    with pytest.raises(symrep.LanguageTypeError, match="no option viw .its options: view, azimuth, elevation"):
+        r.trajectory(values, span, str(tmp_path / "c.svg"), viw="3d")
+    with pytest.raises(symrep.LanguageTypeError, match="inverse: no option view"):
+        s.call("inverse", 2, view="3d")

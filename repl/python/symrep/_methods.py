@@ -37,10 +37,11 @@ def _split_arguments(text):
 
 
 @functools.lru_cache(maxsize=None)
-def signature_of(name, signature, min_args, max_args):
+def signature_of(name, signature, min_args, max_args, options=()):
     """The inspect.Signature of builtin `name` as a method: its first argument is the value.
     The parameter names come from the form of the registry's signature with the most
-    arguments ("exp(x) / exp(w [, t])" -> t); optional ones default to None (left out)."""
+    arguments ("exp(x) / exp(w [, t])" -> t); optional ones default to None (left out).
+    The builtin's options (view = "3d" in the language) are keyword-only, default None."""
     best = []
     for form in signature.split(" / "):
         m = re.match(r"^\s*[A-Za-z_]\w*\s*\((.*)\)\s*$", form.strip())
@@ -62,24 +63,27 @@ def signature_of(name, signature, min_args, max_args):
                                         annotation=_ANNOTATION))
     if variadic:
         params.append(inspect.Parameter("args", inspect.Parameter.VAR_POSITIONAL, annotation=_ANNOTATION))
+    for o in options:
+        params.append(inspect.Parameter(o, inspect.Parameter.KEYWORD_ONLY, default=None, annotation=_ANNOTATION))
     return inspect.Signature(params, return_annotation=_RESULT)
 
 
 def bound_builtin(value, name):
     """v.name: the builtin name(v, ...) as a function with the builtin's help and signature."""
-    sig, doc, lo, hi = value.session._builtin_info(name)
+    sig, doc, lo, hi, options = value.session._builtin_info(name)
 
-    def method(*args):
+    def method(*args, **kwargs):
         args = list(args)
         while len(args) + 1 > lo and args and args[-1] is None:  # an optional argument left out
             args.pop()
-        return value.call(name, *args)
+        given = {k: x for k, x in kwargs.items() if x is not None}  # an option left out
+        return value.call(name, *args, **given)
 
     method.__name__ = name
     method.__qualname__ = "Value." + name
     method.__module__ = "symrep"
     method.__doc__ = doc
-    method.__signature__ = signature_of(name, sig, lo, hi)
+    method.__signature__ = signature_of(name, sig, lo, hi, tuple(options))
     return method
 
 
