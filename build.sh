@@ -19,9 +19,12 @@ JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 ASAN_BUILD_DIR=${ASAN_BUILD_DIR:-$BUILD_DIR-asan}
 MAIN_SCRIPT=examples/foucault.symrep
 
-PACKAGES=(g++ make cmake pkg-config
-          libginac-dev libcln-dev libeigen3-dev libboost-dev
-          libgtest-dev libgmock-dev libbenchmark-dev libreadline-dev gnuplot-nox tmux
+# What the program needs to build and run the main script (bash build.sh main installs only these)
+MAIN_PACKAGES=(g++ make cmake pkg-config
+          libginac-dev libcln-dev libeigen3-dev libboost-dev libreadline-dev gnuplot-nox)
+# and what the tests, the benchmarks, the Python module, the notebooks and the docs need
+PACKAGES=("${MAIN_PACKAGES[@]}"
+          libgtest-dev libgmock-dev libbenchmark-dev tmux
           # the Python module, the Jupyter kernel and the Dask example (docs/python.md)
           pybind11-dev python3-dev python3-numpy python3-pytest python3-sympy
           python3-ipykernel python3-jupyter-client python3-nbformat python3-nbconvert
@@ -34,13 +37,14 @@ PACKAGES=(g++ make cmake pkg-config
           python3-tqdm bsdutils
           # the documentation site (bash build.sh docs; docs/build_site.py)
           python3-sphinx python3-myst-parser python3-nbsphinx python3-sphinx-rtd-theme pandoc
-
           # pip install . (pyproject.toml, setup.py; offline: --no-build-isolation) and its test
           python3-setuptools python3-pip)
 
+# deps [PACKAGE...]: install those of the packages (default: all of PACKAGES) that are missing
 deps() {
-    local missing=()
-    for p in "${PACKAGES[@]}"; do
+    local missing=() wanted=("$@")
+    [ ${#wanted[@]} -eq 0 ] && wanted=("${PACKAGES[@]}")
+    for p in "${wanted[@]}"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
     done
     [ ${#missing[@]} -eq 0 ] && return 0
@@ -55,9 +59,17 @@ deps() {
 }
 
 # build [TARGET...]: configure and build the named targets (default: all of them: the program,
-# the tests, the benchmarks and the Python module). The main job builds only the program.
+# the tests, the benchmarks and the Python module). The main job builds only the program
+# (build_main: configured without the tests, benchmarks and module, whose packages it does
+# not install; a later `build` turns them on again in the same build directory).
+build_main() {
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSYMREP_BUILD_TESTS=OFF -DSYMREP_BUILD_BENCH=OFF \
+          -DSYMREP_BUILD_PYTHON=OFF >/dev/null
+    cmake --build "$BUILD_DIR" -j"$JOBS" --target symrep
+}
 build() {
-    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSYMREP_BUILD_TESTS=ON -DSYMREP_BUILD_BENCH=ON \
+          -DSYMREP_BUILD_PYTHON=ON >/dev/null
     local targets=()
     for t in "$@"; do targets+=(--target "$t"); done
     cmake --build "$BUILD_DIR" -j"$JOBS" "${targets[@]}"
@@ -76,7 +88,7 @@ sanitized_robustness() {
 case "${1:-}" in
     deps)  deps ;;
     build) deps; build ;;
-    main)  deps; build symrep; "$BUILD_DIR"/symrep "$MAIN_SCRIPT" ;;
+    main)  deps "${MAIN_PACKAGES[@]}"; build_main; "$BUILD_DIR"/symrep "$MAIN_SCRIPT" ;;
     test)  deps; build; ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS"
            sanitized_robustness ;;
     fuzz)  deps; sanitized_robustness "${2:-100000}" ;;
