@@ -10,12 +10,13 @@
 #   bash build.sh docs   deps + the program and the Python module, then the documentation
 #                        site (Sphinx, warnings are errors) into BUILD_DIR/docs/html
 # Environment: BUILD_DIR (default: build), ASAN_BUILD_DIR (default: BUILD_DIR-asan),
-# JOBS (default: number of cores).
+# JOBS (default: number of cores + 1).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
 BUILD_DIR=${BUILD_DIR:-build}
-JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+# one job more than cores: a link (single-threaded) or a wait on the disk leaves no core idle
+JOBS=${JOBS:-$(( $(nproc 2>/dev/null || echo 2) + 1 ))}
 ASAN_BUILD_DIR=${ASAN_BUILD_DIR:-$BUILD_DIR-asan}
 MAIN_SCRIPT=examples/foucault.symrep
 
