@@ -18,6 +18,7 @@
 #include "symrep/lang/builtins.h"
 #include "symrep/output/printer.h"
 #include "symrep/lang/values.h"
+#include "symrep/lang/verify_dual.h"
 #include "symrep/mechanics/cauchy_problem.h"
 #include "symrep/mechanics/rotation_operator_algebra.h"
 #include "symrep/mechanics/scene.h"
@@ -522,6 +523,7 @@ value builtin_verify(const builtin& b, const args_t& a, context& c) {
     const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
     data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
     const auto [T, n, opt] = verify_arguments(a, b);
+    if (P.dual_darboux) return verify_dual(P, s, d, T, std::size_t(n), opt, b, c);  // issue 31 item 3
     const auto t0 = std::chrono::steady_clock::now();
     // the closed form with the values put in (t stays free)
     const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);

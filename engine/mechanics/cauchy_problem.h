@@ -47,6 +47,7 @@ namespace symrep::mechanics {
 struct operator_form;
 struct fixed_axis_form;
 struct turning_frame_form;
+struct dual_darboux_form;
 
 struct cauchy_problem {
     std::string name;                  ///< the unknown's name, e.g. "r"
@@ -67,6 +68,9 @@ struct cauchy_problem {
     /// first-order problem for v = x' is a rotating-frame one (a charge in B(t), VI.2.50):
     /// that problem (unknowns x', x''); solve() gives x = x(0) + int_0^t v (VI.2.51-52).
     std::shared_ptr<const cauchy_problem> velocity;
+    /// A problem in the dual unit eps of the form m (x' + Omega x x) = 0 (the dual Poisson-Darboux
+    /// problem, dual_darboux.h): its reading; solve() gives the closed form by transference.
+    std::shared_ptr<const dual_darboux_form> dual_darboux;
 
     /// M, the order.
     std::size_t order() const { return unknowns.size() - 1; }

@@ -4,6 +4,7 @@
 // c_2 w x (w x P) (vector_solution); the fixed-axis (VI.2), turning-frame (VI.3) and velocity
 // (VI.2.50-52) readings handed to their solvers; solve()'s witness (solution_witness.h).
 #include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/dual_darboux.h"
 #include "symrep/mechanics/fixed_axis.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/mechanics/solution_witness.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <map>
 
+#include "symrep/dual/dual.h"
 #include "symrep/scalar/scalar.h"
 #include "symrep/core/error.h"
 #include "symrep/vector/vector.h"
@@ -103,12 +105,28 @@ ex vector_solution(const cauchy_problem& P, const operator_form& F, const operat
 }
 
 ex solve(const cauchy_problem& P) {
+    if (P.dual_darboux) {  // (issue 31 item 3) witnessed part by part: the primal and the dual problem
+        const ex x = solve_unwitnessed(P);
+        const auto [A, B] = dual_darboux_parts(P, *P.dual_darboux, x);
+        require_witness(A, dual::primal(x));
+        require_witness(B, dual::dual_part(x));
+        return x;
+    }
     const ex x = solve_unwitnessed(P);
     require_witness(P, x);  // (issue 27) never a result that its residual at a point sees wrong
     return x;
 }
 
 ex solve_unwitnessed(const cauchy_problem& P) {
+    if (P.dual_darboux) {  // x^ = Q^ x^0 by transference (dual_darboux.h)
+        const ex x = solve_dual_darboux(P, *P.dual_darboux);
+        return problem_has_float(P) ? dual::reduce(GiNaC::evalf(x)) : x;
+    }
+    if (is_dual_problem(P))
+        throw closed_form_error("the problem " + to_string(P.expression) + " = 0 holds the dual unit eps: with dual data "
+                                "symrep solves the dual Poisson-Darboux problem m (" + P.unknown_name(1) +
+                                " + Omega x " + P.name + ") = 0, " + P.name +
+                                "(0) = x0 only (docs/rigid_body.md section 3)");
     if (!P.reduced && P.velocity) {  // (VI.2.51) x = x(0) + int_0^t x'
         const ex v = solve_unwitnessed(*P.velocity);
         try {

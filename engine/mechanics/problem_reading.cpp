@@ -4,6 +4,7 @@
 // that operator form, or a rotating frame about a fixed axis (fixed_axis.h, VI.2), a turning
 // frame (turning_frame.h, VI.3), or the velocity problem v = x' (VI.2.50-52).
 #include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/dual_darboux.h"
 #include "symrep/mechanics/fixed_axis.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/mechanics/quasi_polynomial.h"
@@ -483,6 +484,10 @@ std::shared_ptr<const cauchy_problem> velocity_problem(const cauchy_problem& P, 
 }  // namespace
 
 void read_problem(cauchy_problem& P) {
+    if (auto D = read_dual_darboux(P)) {  // the dual Poisson-Darboux problem (issue 31 item 3)
+        P.dual_darboux = std::make_shared<const dual_darboux_form>(std::move(*D));
+        return;
+    }
     try {
         P.reduced = std::make_shared<const operator_form>(reduce(P));
     } catch (const domain_error&) {

@@ -2,6 +2,7 @@
 #include "symrep/mechanics/scene.h"
 #include "symrep/mechanics/solution_witness.h"
 
+#include "symrep/mechanics/dual_darboux.h"
 #include "symrep/mechanics/fixed_axis.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/numeric/quadrature.h"
@@ -462,6 +463,9 @@ long values_scale(const parameter_values& v) {
 }  // namespace
 
 scene_solution solve(const cauchy_problem& P, const parameter_values& v) {
+    if (is_dual_problem(P))  // (issue 31) the scenes' cases are real: no eps as a parameter
+        throw closed_form_error("solve(P, values) of a problem in the dual unit eps: solve(P) gives its closed form "
+                                "(docs/rigid_body.md section 3), subs puts the values in");
     const std::optional<ex> closed_turning =
         !P.reduced && P.turning ? closed_solution(P, *P.turning) : std::optional<ex>();
     if (!P.reduced && P.turning && !closed_turning)

@@ -5,6 +5,7 @@
 // by components (vector.h); with floating-point numbers, what is left may be rounding
 // (rounding_tolerance()).
 #include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/dual/dual.h"
 #include "symrep/mechanics/residual_proof.h"
 #include "symrep/mechanics/solution_witness.h"
 
@@ -213,9 +214,56 @@ void check_initial_values(const cauchy_problem& P, const std::vector<ex>& d, boo
     }
 }
 
+// (issue 31) A problem or solution in the dual unit eps: the residual and the initial differences
+// reduced modulo eps^2 (dual/dual.h), each part (primal, dual) decided as a real one.
+bool dual_part_zero(const cauchy_problem& P, const ex& r, bool floats, solution_check& out) {
+    if (r.is_zero()) return true;
+    bool zero = false;
+    if (!P.is_vector) zero = is_zero_scalar(r);
+    else if (num::has_integral(r)) zero = integral_residual_zero(r);
+    else if (quasi_polynomial_residual_zero(r, P.t)) zero = true;
+    else if (nonzero_at_a_point(r, P.t)) out.residual_seen_nonzero = !floats;
+    else zero = equal(r, 0);
+    if (!zero && floats && P.is_vector) {  // rounding-size at the point (floats rounded once)
+        const double q = residual_ratio_at_point(r, P.t);
+        if (q >= 0 && q <= rounding_tolerance()) {
+            out.residual_seen_nonzero = false;
+            out.rounding = std::max(out.rounding, q);
+            zero = true;
+        }
+    }
+    return zero;
+}
+
+solution_check check_dual(const cauchy_problem& P, const ex& s) {
+    solution_check out;
+    const bool floats = problem_has_float(P) || has_float(s);
+    const std::vector<ex> d = derivatives(P, s);
+    const dual::dual_parts r = dual::parts(substituted(P, P.expression, d));
+    const auto tidy = [&](const ex& e) { return P.is_vector ? canonical(e) : GiNaC::normal(e); };
+    const bool primal = dual_part_zero(P, r.primal, floats, out);
+    const bool dual = primal && dual_part_zero(P, r.dual, floats, out);
+    out.residual_zero = primal && dual;
+    if (out.residual_zero) out.residual_seen_nonzero = false;
+    out.residual = out.residual_zero ? ex(0) : dual::make_dual(tidy(r.primal), tidy(r.dual));
+    out.initial_ok = true;
+    for (std::size_t m = 0; m < P.order(); ++m) {
+        const dual::dual_parts i = dual::parts(d[m].subs(P.t == 0) - P.initial[m]);
+        solution_check scratch;
+        const bool zero = dual_part_zero(P, i.primal, floats, scratch) && dual_part_zero(P, i.dual, floats, scratch);
+        out.rounding = std::max(out.rounding, scratch.rounding);
+        out.initial_differences.push_back(zero ? ex(0) : dual::make_dual(tidy(i.primal), tidy(i.dual)));
+        out.initial_ok = out.initial_ok && zero;
+    }
+    return out;
+}
+
 }  // namespace
 
 solution_check check(const cauchy_problem& P, const ex& s) {
+    if (dual::has_dual_unit(s) || P.dual_darboux || dual::has_dual_unit(P.expression) ||
+        std::any_of(P.initial.begin(), P.initial.end(), [](const ex& x) { return dual::has_dual_unit(x); }))
+        return check_dual(P, s);
     solution_check out;
     const std::vector<ex> d = derivatives(P, s);
     out.residual = substituted(P, P.expression, d);

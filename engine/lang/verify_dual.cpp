@@ -1,0 +1,68 @@
+// symrep/lang/verify_dual.cpp -- verify() for a dual problem (verify_dual.h).
+#include "symrep/lang/verify_dual.h"
+
+#include <chrono>
+#include <iomanip>
+
+#include "symrep/core/error.h"
+#include "symrep/dual/dual.h"
+#include "symrep/numeric/reference.h"
+#include "symrep/numeric/verify.h"
+#include "symrep/vector/vector.h"
+
+namespace symrep::lang {
+
+using GiNaC::ex;
+
+value verify_dual(const mechanics::cauchy_problem& P, const ex& s, const data_values& d, double T, std::size_t n,
+                  const num::integration_options& opt, const builtin& b, context& c) {
+    if (!P.is_vector || P.order() != 1)
+        throw type_error(b.name + ": a dual problem is verified for a first-order vector problem only");
+    const auto t0 = std::chrono::steady_clock::now();
+    const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
+    data_values dv = d;
+    dv.scalars.erase(P.t);
+    // the closed form's parts, six components
+    const dual::dual_parts sp = dual::parts(s);
+    std::vector<ex> cf;
+    for (const ex& part : {sp.primal, sp.dual}) {
+        const ex e = part.is_zero() ? vector_literal(0, 0, 0) : part;
+        for (const ex& x : components(put_values_limit(e, dv))) cf.push_back(x);
+    }
+    // the state x (y0..y2) and y (y3..y5); x^' = a + eps b solved from E reduced modulo eps^2
+    std::vector<ex> state, acc;
+    for (int i = 0; i < 6; ++i) state.push_back(GiNaC::symbol("y" + std::to_string(i)));
+    for (int i = 0; i < 6; ++i) acc.push_back(GiNaC::symbol("a" + std::to_string(i)));
+    const ex eps = dual::dual_unit();
+    const ex X = vector_literal(state[0], state[1], state[2]) + eps * vector_literal(state[3], state[4], state[5]);
+    const ex A = vector_literal(acc[0], acc[1], acc[2]) + eps * vector_literal(acc[3], acc[4], acc[5]);
+    vmap sub{{P.unknowns[0], X}, {P.unknowns[1], A}};
+    const dual::dual_parts E = dual::parts(subs_vectors(P.expression, sub));
+    GiNaC::lst eqs, unk;
+    for (const ex& part : {E.primal, E.dual})
+        for (const ex& x : components(put_values(part.is_zero() ? vector_literal(0, 0, 0) : part, dv)))
+            eqs.append(GiNaC::expand(x) == 0);
+    for (const ex& a : acc) unk.append(a);
+    const ex sol = GiNaC::lsolve(eqs, unk);
+    if (sol.nops() != 6)
+        throw domain_error(b.name + ": the dual problem cannot be solved for " + P.unknown_name(1) +
+                           " at these values (its leading coefficient is singular)");
+    std::vector<ex> rhs;
+    for (std::size_t i = 0; i < 6; ++i) rhs.push_back(GiNaC::expand(sol.op(i).rhs()));
+    std::vector<double> initial;
+    const dual::dual_parts x0 = dual::parts(P.initial[0]);
+    for (const ex& part : {x0.primal, x0.dual})
+        for (const ex& x : components(put_values_limit(part.is_zero() ? vector_literal(0, 0, 0) : part, dv)))
+            initial.push_back(to_double(x, b, "the initial value of " + P.name));
+    const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const num::verify_result v = num::verify(cf, t, rhs, state, initial, {}, 0.0, T, n, opt);
+    static const char* axes[] = {"x", "y", "z", "eps x", "eps y", "eps z"};
+    c.out() << "verify: max relative difference " << std::setprecision(3) << v.max_relative_difference
+            << " (component " << axes[v.component_of_max] << " of " << P.name << ", t = " << std::setprecision(6)
+            << v.time_of_max << ") over " << v.n_points << " points in [0, " << T << "]; the dual problem as six "
+            << "real equations, " << num::stepper_name(opt.stepper) << " (" << v.rhs_evaluations
+            << " right-hand sides), setup " << std::setprecision(3) << prep + v.compile_seconds << " s\n";
+    return value(ex(num::from_double(v.max_relative_difference)));
+}
+
+}  // namespace symrep::lang
