@@ -42,7 +42,7 @@ plot "< grep Se3Moving_Magnus6 $out/se3_wp.csv" using 3:4 with linespoints pt 7 
      "< grep Se3Moving_Odeint12_rkf78 $out/se3_wp.csv" using 3:4 with linespoints pt 5 title "rkf78, 12 components", \
      "< grep Se3Moving_Odeint12_dopri5 $out/se3_wp.csv" using 3:4 with linespoints pt 9 title "dopri5, 12 components"
 set title "regular screw precession: Q = exp(-t b) exp(-t a)"
-set key top right
+set key center left
 plot "< grep Se3Precession_Magnus6 $out/se3_wp.csv" using 3:4 with linespoints pt 7 title "Magnus 6 on SE(3)", \
      "< grep Se3Precession_Odeint12_rkf78 $out/se3_wp.csv" using 3:4 with linespoints pt 5 title "rkf78, 12 components", \
      "< grep Se3Precession_Odeint12_dopri5 $out/se3_wp.csv" using 3:4 with linespoints pt 9 title "dopri5, 12 components", \
