@@ -5,6 +5,7 @@
 // (VI.2.50-52) readings handed to their solvers; solve()'s witness (solution_witness.h).
 #include "symrep/mechanics/cauchy_problem.h"
 #include "symrep/mechanics/fixed_axis.h"
+#include "symrep/mechanics/moving_frame.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/mechanics/solution_witness.h"
 
@@ -109,6 +110,7 @@ ex solve(const cauchy_problem& P) {
 }
 
 ex solve_unwitnessed(const cauchy_problem& P) {
+    if (const auto F = moving_frame_of(P)) return solve_moving_frame(P, *F);  // ([CS21] Thm 12) r = R (psi - o)
     if (!P.reduced && P.velocity) {  // (VI.2.51) x = x(0) + int_0^t x'
         const ex v = solve_unwitnessed(*P.velocity);
         try {
