@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "symrep/lang/builtins.h"
+#include "symrep/lang/builtins_frames.h"
 #include "symrep/lang/interpreter.h"
 
 namespace symrep::lang {
@@ -22,6 +23,7 @@ void register_all_builtins(registry& r) {
     register_signals_builtins(r);
     register_transforms_builtins(r);
     register_identification_builtins(r);
+    register_frames_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

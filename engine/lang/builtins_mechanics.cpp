@@ -16,6 +16,7 @@
 
 #include "symrep/scalar/scalar.h"
 #include "symrep/lang/builtins.h"
+#include "symrep/lang/builtins_frames.h"
 #include "symrep/output/printer.h"
 #include "symrep/lang/values.h"
 #include "symrep/lang/verify_dual.h"
@@ -30,6 +31,7 @@
 #include "symrep/mechanics/relative_motion.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/mechanics/reduced_solution.h"
+#include "symrep/mechanics/moving_frame.h"
 #include "symrep/numeric/verify.h"
 #include "symrep/numeric/quadrature.h"
 #include "symrep/vector/vector.h"
@@ -97,6 +99,11 @@ std::string precision_note(const num::verify_result& v) {
 }  // namespace
 
 value solve_problem(const value& p) {
+    if (const auto F = mechanics::moving_frame_of(p.as_problem()); F && F->rotating && mechanics::inertial_is_numeric(*F))
+        // ([CS21] Thm 12) r = Q (psi - o), psi numeric (Kepler): the VI.3 object of y = Q psi, whose
+        // problem carries the origin o (moving_frame_origin)
+        return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+            mechanics::reduced_solution{F->rotating, {}})});
     if (p.as_problem().turning && !mechanics::closed_solution(p.as_problem(), *p.as_problem().turning))
         // (Thm VI.3.2.1) r = F_(-w)(psi): Q or psi has no closed form
         return value(reduction{std::make_shared<const mechanics::reduced_solution>(
@@ -380,6 +387,7 @@ value builtin_first_integrals(const builtin& b, const args_t& a, context&) {
 
 value builtin_check(const builtin& b, const args_t& a, context& c) {
     const auto& P0 = problem_arg(a, 0, b);
+    if (a[1].is_reduction() && mechanics::moving_frame_of(P0) && a.size() == 2) return check_moving_frame(b, P0, c);
     if (a[1].is_reduction())
         throw domain_error(b.name + ": the solution is the reduction " + P0.name +
                            " = F_(-w)(psi) (Thm VI.3.2.1, proved once for all w in the tests), not a closed "

@@ -6,6 +6,7 @@
 #include "symrep/mechanics/cauchy_problem.h"
 #include "symrep/mechanics/dual_darboux.h"
 #include "symrep/mechanics/fixed_axis.h"
+#include "symrep/mechanics/moving_frame.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/mechanics/solution_witness.h"
 
@@ -127,6 +128,7 @@ ex solve_unwitnessed(const cauchy_problem& P) {
                                 "symrep solves the dual Poisson-Darboux problem m (" + P.unknown_name(1) +
                                 " + Omega x " + P.name + ") = 0, " + P.name +
                                 "(0) = x0 only (docs/rigid_body.md section 3)");
+    if (const auto F = moving_frame_of(P)) return solve_moving_frame(P, *F);  // ([CS21] Thm 12) r = R (psi - o)
     if (!P.reduced && P.velocity) {  // (VI.2.51) x = x(0) + int_0^t x'
         const ex v = solve_unwitnessed(*P.velocity);
         try {

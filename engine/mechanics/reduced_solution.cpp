@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "symrep/core/error.h"
+#include "symrep/mechanics/moving_frame.h"
 #include "symrep/numeric/evaluator.h"
 #include "symrep/numeric/integrate.h"
 #include "symrep/numeric/reference.h"
@@ -131,6 +132,9 @@ std::string reduced_solution::to_string() const {
             "   (VI.3.118-119; numeric: Magnus on SO(3))";
     else
         s = describe_reduction(*problem, form());
+    if (const ex origin = moving_frame_origin(*problem); !origin.is_zero())
+        s += "\n  seen from the frame whose origin moves along o(t) = " + symrep::to_string(origin) + ": " +
+             problem->name + " = Q (psi - o)   ([CS21] Thm 12)";
     std::vector<std::string> given;
     for (const auto& [k, v] : values.vectors) given.push_back(symrep::to_string(k) + " = " + symrep::to_string(v));
     for (const auto& [k, v] : values.scalars) given.push_back(symrep::to_string(k) + " = " + symrep::to_string(v));
@@ -197,7 +201,15 @@ std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const valu
     num::rotation_tensor_options o;
     o.max_steps = 5'000'000;
     if (P.order() == 2) {
-        std::vector<rotating_frame_state> out = solve_by_reduction(R, times, o);
+        std::vector<rotating_frame_state> out;
+        if (const ex origin = moving_frame_origin(P); origin.is_zero()) {
+            out = solve_by_reduction(R, times, o);
+        } else {  // ([CS21] Thm 12) r = Q (psi - o)
+            const ex ov = literal(put(origin), "the origin's path o(t)");
+            out = moving_frame_states({R, vector_of_t(ov, P.t, "o(t)"),
+                                       vector_of_t(ov.diff(GiNaC::ex_to<GiNaC::symbol>(P.t)), P.t, "o'(t)")},
+                                      times, o);
+        }
         if (!s.form().terms.free.is_zero()) add_forced_part(s, put, R, times, out);
         return out;
     }
