@@ -98,17 +98,19 @@ ex dual_angle(const screw& s) {
     return reduce(s.angle + dual_unit() * s.translation);
 }
 
-ex exp_dual_skew(const ex& w, const ex& x) {
+ex exp_dual_skew(const ex& w, const ex& x, const ex& s) {
     require_dual_vector(w, "the twist w^");
     require_dual_vector(x, "the dual vector x^");
     const dual_parts wp = parts(w);
     const ex wx = dual_cross(w, x);
     // exp(eps V) = I + eps V: (eps V)^2 = 0
-    if (wp.primal.is_zero() || equal(wp.primal, 0)) return tidy_dual(x + wx);
+    if (has_dual_unit(s) || is_vector(s)) throw type_error("the time s of exp(s W^) must be a real scalar");
+    if (wp.primal.is_zero() || equal(wp.primal, 0)) return tidy_dual(x + s * wx);
     if (!is_nonzero_generic(dot(wp.primal, wp.primal), "|w|^2 of the twist's primal part w = " + text(wp.primal)))
-        return tidy_dual(x + wx);
+        return tidy_dual(x + s * wx);
     const ex th = GiNaC::sqrt(dual_dot(w, w));  // the dual norm |w^|
-    return tidy_dual(x + GiNaC::sin(th) / th * wx + (1 - GiNaC::cos(th)) / GiNaC::pow(th, 2) * dual_cross(w, wx));
+    return tidy_dual(x + GiNaC::sin(s * th) / th * wx +
+                     (1 - GiNaC::cos(s * th)) / GiNaC::pow(th, 2) * dual_cross(w, wx));
 }
 
 ex screw_apply(const screw& s, const ex& x) {

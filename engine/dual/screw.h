@@ -53,9 +53,10 @@ GiNaC::ex dual_axis(const screw& s);
 /// The dual angle a^ = a + eps d.
 GiNaC::ex dual_angle(const screw& s);
 
-/// exp(W^) x^ with W^ y^ = w^ x y^, for any dual vector w^ and dual vector x^ (the dual
-/// Rodrigues formula, above), reduced. A primal part w proved 0: x^ + eps v x x^.
-GiNaC::ex exp_dual_skew(const GiNaC::ex& w, const GiNaC::ex& x);
+/// exp(s W^) x^ with W^ y^ = w^ x y^, for any dual vector w^, dual vector x^ and real scalar
+/// s (a time; 1 by default): x^ + sin(s|w^|)/|w^| w^ x x^ + (1 - cos(s|w^|))/|w^|^2 w^ x (w^ x x^)
+/// (the dual Rodrigues formula, above), reduced. A primal part w proved 0: x^ + s eps v x x^.
+GiNaC::ex exp_dual_skew(const GiNaC::ex& w, const GiNaC::ex& x, const GiNaC::ex& s = 1);
 
 /// Q^ x^ = cos(a^) x^ + sin(a^) u^ x x^ + (1 - cos(a^)) (u^ . x^) u^ ([CB14]), reduced.
 GiNaC::ex screw_apply(const screw& s, const GiNaC::ex& x);

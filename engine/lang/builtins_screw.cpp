@@ -217,7 +217,7 @@ value dual_rotation_operator(const builtin& b, const args_t& a, context& c, cons
         throw closed_form_error(b.name + ": the dual w^ = " + print_ex(w) +
                                 " depends on t: F over a dual twist is in closed form here for a constant "
                                 "twist w + eps v only (exp(t W^), the dual Rodrigues formula)");
-    return value(named(b, [&] { return dual::exp_dual_skew(dual::reduce(t * w), x); }));
+    return value(named(b, [&] { return dual::exp_dual_skew(w, x, t); }));
 }
 
 void register_screw_builtins(registry& r) {
