@@ -8,6 +8,8 @@
 
 namespace symrep::lang {
 
+void register_screw_builtins(registry& r);  // lang/builtins_screw.cpp: screw motion, dual quaternions
+
 void register_all_builtins(registry& r) {
     register_core_builtins(r);
     register_algebra_builtins(r);
@@ -24,6 +26,7 @@ void register_all_builtins(registry& r) {
     register_transforms_builtins(r);
     register_identification_builtins(r);
     register_frames_builtins(r);
+    register_screw_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

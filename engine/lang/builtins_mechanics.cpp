@@ -38,6 +38,12 @@
 
 namespace symrep::lang {
 
+// lang/builtins_screw.cpp: F and F_adjoint with a dual w or x (a constant dual twist: exp(t W^) x^;
+// a real w: real_operator, the builtin's own body, on each part of x)
+bool has_dual_argument(const std::vector<value>& a);
+value dual_rotation_operator(const builtin& b, const std::vector<value>& a, context& c,
+                             const builtin_body& real_operator);
+
 using output::print_ex;
 
 using GiNaC::ex;
@@ -326,6 +332,7 @@ rotation_operands read_rotation_operands(const builtin& b, const args_t& a, cont
 }
 
 value builtin_F(const builtin& b, const args_t& a, context& c) {
+    if (has_dual_argument(a)) return dual_rotation_operator(b, a, c, builtin_F);  // dual w or x (builtins_screw.cpp)
     const auto [w, x, t, identity] = read_rotation_operands(b, a, c);
     if (identity) return value(x);
     // F_w = F_(-v) with v = -w, the Q of v (turning_frame.h): closed for a fixed direction
@@ -669,6 +676,8 @@ value builtin_planar(const builtin& b, const args_t& a, context& c) {
 }
 
 value builtin_F_adjoint(const builtin& b, const args_t& a, context& c) {
+    // a constant dual twist: Q^T = exp(t W^) = F_w (builtins_screw.cpp)
+    if (has_dual_argument(a)) return dual_rotation_operator(b, a, c, builtin_F_adjoint);
     const auto [w, x, t, identity] = read_rotation_operands(b, a, c);
     if (identity) return value(x);
     const auto y = mechanics::rotated_adjoint(w, x, t);
@@ -743,7 +752,8 @@ void register_two_body_builtins(registry& r) {
          "The transformation F*_w(x) = Q^T x of Thm VI.3.1.1 (VI.3.119), Q the tensor of F_(-w) (Q' = -W Q, "
          "Q(0) = I): the reduction psi = F*_w(r) of Thm VI.3.2.1. In closed form where Q is (a fixed direction: "
          "the rotation by the opposite angle, = F(w, x); a regular precession: (Q^T x)_i = (Q e_i) . x), proved "
-         "Q (Q^T x) = x; x may depend on t. Refused for a turning w (Q numeric).",
+         "Q (Q^T x) = x; x may depend on t. Refused for a turning w (Q numeric). A constant dual twist "
+         "w0 + eps v: exp(t W) x, as F (docs/rigid_body.md section 2).",
          "(VI.3.119), (Thm VI.3.1.1)",
          "vector x\nF_adjoint([sin(t), cos(t), 1], x)",
          2, 2, builtin_F_adjoint},
@@ -779,7 +789,9 @@ void register_mechanics_builtins(registry& r) {
          "y' = w x y with y(0) = x, so that F(-w, psi) is Q psi of the reduction r = F_(-w)(psi). In closed form "
          "for a constant w (Rodrigues), a fixed direction w = s(t) u (angle a(t) = |u| int_0^t s, an integral "
          "object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution "
-         "by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed.",
+         "by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed. "
+         "Dual arguments (docs/rigid_body.md section 2): a constant dual twist w = w0 + eps v gives exp(t W) x, the "
+         "dual Rodrigues formula (R' = W R by transference); a real w acts on each part of a dual x.",
          "(VI.2.9-12), (VI.3.118-119)", "vector u, x\nF((1 + sin(t))*u, x)", 2, 2, builtin_F},
         {"vector_series", "vector_series(e, w, n)",
          "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "
