@@ -266,7 +266,19 @@ TEST(DualDarboux, TheLanguagePath) {
         "F := ode(x' + (sin(t) + eps*t^2)*([0, 0, 2] + eps*[1, 3, 5]) x x = 0, x(0) = [1, 1, 0] + eps*[0, -1, 2])\n"
         "f := solve(F)\n"
         "expect(check(F, f))\n"
-        "expect(verify(F, f, [], 6) < 1e-9)\n");
+        "expect(verify(F, f, [], 6) < 1e-9)\n"
+        "T := ode(x' + eps*cos(t)*[0, 0, 1] x x = 0, x(0) = a + eps*b)\n"
+        "h := solve(T)\n"
+        "expect(h == a + eps*(b - sin(t)*([0, 0, 1] x a)))\n"
+        "expect(verify(T, h, [a = [1, 2, 0], b = [0, 0, 1]], 6, 200, \"dopri5\") < 1e-9)\n"
+        "c := 2 + eps/2\n"
+        "u1 := [0, 0, 1] + eps*([0, 1, 0] x [0, 0, 1])\n"
+        "V := [1, 0, 3] + eps*[0, 2, 0]\n"
+        "W := c*u1 + cos(c*t)*V - sin(c*t)*(u1 x V) + (1 - cos(c*t))*(u1 . V)*u1\n"
+        "R := ode(x' + W x x = 0, x(0) = [0, 1, 0] + eps*[1, 0, -1])\n"
+        "r := solve(R)\n"
+        "expect(check(R, r))\n"
+        "expect(verify(R, r, [], 6) < 1e-9)\n");
     EXPECT_EQ(failed, 0) << ts.err.str();
     EXPECT_NE(ts.out.str().find("the dual problem as six real equations"), std::string::npos) << ts.out.str();
     // a general twist: solve says why, naming the twist
