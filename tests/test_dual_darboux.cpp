@@ -20,7 +20,10 @@
 #include "symrep/dual/dual.h"
 #include "symrep/mechanics/cauchy_problem.h"
 #include "symrep/mechanics/dual_darboux.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/numeric/se3.h"
 #include "symrep/vector/vector.h"
+#include "test_support.h"
 
 using namespace symrep;
 using GiNaC::ex;
@@ -37,33 +40,33 @@ const GiNaC::realsymbol& tsym() {
 ex vec(const ex& a, const ex& b, const ex& c) { return vector_literal(a, b, c); }
 ex dvec(const ex& p, const ex& d) { return dual::make_dual(p, d); }
 
-// The components of a real vector expression without symbols but t, at t.
-Eigen::Vector3d at(const ex& e, double tv) {
-    const ex c = canonical(e.subs(tsym() == GiNaC::numeric(tv))).evalm();
-    Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    if (c.is_zero()) return x;
-    for (int i = 0; i < 3; ++i) {
-        const ex v = GiNaC::evalf(c.op(i));
-        EXPECT_TRUE(GiNaC::is_a<GiNaC::numeric>(v)) << v;
-        x[i] = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+// A real vector expression in t compiled once (numeric/evaluator.h): its components at t.
+struct in_time {
+    num::compiled_function f;
+    bool zero = false;
+    explicit in_time(const ex& e) {
+        const ex c = canonical(e);
+        zero = c.is_zero();
+        if (!zero) f = num::compile(c.evalm(), {tsym()});
     }
-    return x;
-}
+    Eigen::Vector3d operator()(double tv) const { return zero ? Eigen::Vector3d::Zero() : f.eval3(&tv); }
+};
 
 // The largest difference, relative to the largest value, between the closed form x^ and the
 // integration of x' = -w x x, y' = -w x y - v x x from x^0 over the times.
 double against_odeint(const ex& omega, const ex& x0, const ex& closed, const std::vector<double>& times) {
     using state = std::array<double, 6>;
     const dual::dual_parts om = dual::parts(omega), c = dual::parts(closed), i = dual::parts(x0);
+    const in_time W(om.primal), V(om.dual), X(c.primal), Y(c.dual), X0(i.primal), Y0(i.dual);
     auto rhs = [&](const state& s, state& ds, double tv) {
-        const Eigen::Vector3d w = at(om.primal, tv), v = at(om.dual, tv), x(s[0], s[1], s[2]), y(s[3], s[4], s[5]);
+        const Eigen::Vector3d w = W(tv), v = V(tv), x(s[0], s[1], s[2]), y(s[3], s[4], s[5]);
         const Eigen::Vector3d dx = -w.cross(x), dy = -w.cross(y) - v.cross(x);
         for (int k = 0; k < 3; ++k) {
             ds[k] = dx[k];
             ds[3 + k] = dy[k];
         }
     };
-    const Eigen::Vector3d x00 = at(i.primal, 0), y00 = at(i.dual, 0);
+    const Eigen::Vector3d x00 = X0(0), y00 = Y0(0);
     state s{x00[0], x00[1], x00[2], y00[0], y00[1], y00[2]};
     double t0 = 0, worst = 0, scale = 0;
     for (double tv : times) {
@@ -71,7 +74,7 @@ double against_odeint(const ex& omega, const ex& x0, const ex& closed, const std
             boost::numeric::odeint::make_controlled<boost::numeric::odeint::runge_kutta_dopri5<state>>(1e-13, 1e-13),
             rhs, s, t0, tv, 0.01);
         t0 = tv;
-        const Eigen::Vector3d x = at(c.primal, tv), y = at(c.dual, tv);
+        const Eigen::Vector3d x = X(tv), y = Y(tv);
         for (int k = 0; k < 3; ++k) {
             worst = std::max({worst, std::abs(x[k] - s[k]), std::abs(y[k] - s[3 + k])});
             scale = std::max({scale, std::abs(s[k]), std::abs(s[3 + k])});
@@ -81,6 +84,24 @@ double against_odeint(const ex& omega, const ex& x0, const ex& closed, const std
 }
 
 const std::vector<double> times{0.3, 1.1, 2.5, 6.0};
+
+// The same against the dual tensor Q^ integrated by the sixth-order Magnus method on SE(3)
+// (numeric/se3.h, at its default 1e-13 per unit time): x^(t) = Q^(t) x^0.
+double against_magnus(const ex& omega, const ex& x0, const ex& closed) {
+    const dual::dual_parts om = dual::parts(omega), c = dual::parts(closed), i = dual::parts(x0);
+    const in_time W(om.primal), V(om.dual), X(c.primal), Y(c.dual), X0(i.primal), Y0(i.dual);
+    const num::twist_function xi = [&](double tv) { return num::twist{W(tv), V(tv)}; };
+    const num::se3_tensor_result Q = num::se3_tensor(xi, times);
+    const num::twist start{X0(0), Y0(0)};
+    double worst = 0, scale = 0;
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const num::twist x = num::apply(Q.Q[k], start);
+        const Eigen::Vector3d p = X(times[k]), d = Y(times[k]);
+        worst = std::max({worst, (p - x.w).cwiseAbs().maxCoeff(), (d - x.v).cwiseAbs().maxCoeff()});
+        scale = std::max({scale, x.w.cwiseAbs().maxCoeff(), x.v.cwiseAbs().maxCoeff()});
+    }
+    return worst / scale;
+}
 
 }  // namespace
 
@@ -93,6 +114,7 @@ TEST(DualDarboux, ConstantTwistIsTheScrewMotion) {
     const ex x = *mechanics::dual_darboux_motion(F, x0, t);
     EXPECT_TRUE(mechanics::dual_darboux_solves(omega, x0, x, t)) << x;
     EXPECT_LT(against_odeint(omega, x0, x, times), 1e-9);
+    EXPECT_LT(against_magnus(omega, x0, x), 1e-9);
     // a wrong sign of the dual part of the twist is seen, exactly and numerically
     const ex wrong = dual::reduce(omega - 2 * eps * vec(0, 1, -3));
     EXPECT_FALSE(mechanics::dual_darboux_solves(wrong, x0, x, t));
@@ -131,6 +153,7 @@ TEST(DualDarboux, FixedScrewAxisWithVaryingRates) {
     const ex x = *mechanics::dual_darboux_motion(F, x0, t);
     EXPECT_TRUE(mechanics::dual_darboux_solves(omega, x0, x, t)) << x;
     EXPECT_LT(against_odeint(omega, x0, x, times), 1e-9);
+    EXPECT_LT(against_magnus(omega, x0, x), 1e-9);
     // the rate as literal components: [t, 2 t, 0] + eps [exp(-t), 0, 1]... is not one axis
     const ex turning = dvec(vec(t, 2 * t, 0), vec(GiNaC::exp(-t), 0, 1));
     EXPECT_EQ(mechanics::read_dual_twist(turning, t).form, dual_twist_form::kind::general);
@@ -169,6 +192,7 @@ TEST(DualDarboux, RegularScrewPrecession) {
     const ex x = *mechanics::dual_darboux_motion(F, x0, t);
     EXPECT_TRUE(mechanics::dual_darboux_solves(omega, x0, x, t)) << x;
     EXPECT_LT(against_odeint(omega, x0, x, times), 1e-9);
+    EXPECT_LT(against_magnus(omega, x0, x), 1e-9);
 }
 
 TEST(DualDarboux, PrecessionOfTheTranslationalVelocityOnly) {
@@ -228,4 +252,36 @@ TEST(DualDarboux, GeneralTwistHasNoClosedForm) {
     const mechanics::cauchy_problem P = darboux_problem(omega, dvec(vec(1, 0, 0), 0));
     ASSERT_TRUE(P.dual_darboux);
     EXPECT_THROW(mechanics::solve(P), closed_form_error);
+}
+
+TEST(DualDarboux, TheLanguagePath) {
+    symrep::test::test_session ts;
+    ts.s.set("eps", lang::value(eps));  // the language's constant eps (the same dual unit)
+    const int failed = ts.run(
+        "vector w, v, a, b\n"
+        "P := ode(x' + (w + eps*v) x x = 0, x(0) = a + eps*b)\n"
+        "s := solve(P)\n"
+        "expect(check(P, s))\n"
+        "expect(verify(P, s, [w = [0.3, -1, 2], v = [1, 1, 0], a = [0, 1, 0], b = [2, 0, -1]], 10) < 1e-9)\n"
+        "F := ode(x' + (sin(t) + eps*t^2)*([0, 0, 2] + eps*[1, 3, 5]) x x = 0, x(0) = [1, 1, 0] + eps*[0, -1, 2])\n"
+        "f := solve(F)\n"
+        "expect(check(F, f))\n"
+        "expect(verify(F, f, [], 6) < 1e-9)\n"
+        "T := ode(x' + eps*cos(t)*[0, 0, 1] x x = 0, x(0) = a + eps*b)\n"
+        "h := solve(T)\n"
+        "expect(h == a + eps*(b - sin(t)*([0, 0, 1] x a)))\n"
+        "expect(verify(T, h, [a = [1, 2, 0], b = [0, 0, 1]], 6, 200, \"dopri5\") < 1e-9)\n"
+        "c := 2 + eps/2\n"
+        "u1 := [0, 0, 1] + eps*([0, 1, 0] x [0, 0, 1])\n"
+        "V := [1, 0, 3] + eps*[0, 2, 0]\n"
+        "W := c*u1 + cos(c*t)*V - sin(c*t)*(u1 x V) + (1 - cos(c*t))*(u1 . V)*u1\n"
+        "R := ode(x' + W x x = 0, x(0) = [0, 1, 0] + eps*[1, 0, -1])\n"
+        "r := solve(R)\n"
+        "expect(check(R, r))\n"
+        "expect(verify(R, r, [], 6) < 1e-9)\n");
+    EXPECT_EQ(failed, 0) << ts.err.str();
+    EXPECT_NE(ts.out.str().find("the dual problem as six real equations"), std::string::npos) << ts.out.str();
+    // a general twist: solve says why, naming the twist
+    EXPECT_EQ(ts.run("solve(ode(x' + ([t, 0, 1] + eps*[0, 1, 0]) x x = 0, x(0) = [1, 0, 0]))\n"), 1);
+    EXPECT_NE(ts.err.str().find("has no closed form here"), std::string::npos) << ts.err.str();
 }

@@ -22,26 +22,30 @@ value verify_dual(const mechanics::cauchy_problem& P, const ex& s, const data_va
     const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(P.t);
     data_values dv = d;
     dv.scalars.erase(P.t);
+    // a vector expression by components (a 3x1 matrix), the vectors of `with` put in
+    const auto by_components = [](const ex& e, const vmap& with) {
+        const ex c = vector_symbols(e).empty() ? e : subs_components(e, with);
+        if (GiNaC::is_a<GiNaC::matrix>(c)) return c;
+        const ex k = canonical(c);
+        return k.is_zero() ? vector_literal(0, 0, 0) : k.evalm();
+    };
     // the closed form's parts, six components
     const dual::dual_parts sp = dual::parts(s);
     std::vector<ex> cf;
-    for (const ex& part : {sp.primal, sp.dual}) {
-        const ex e = part.is_zero() ? vector_literal(0, 0, 0) : part;
-        for (const ex& x : components(put_values_limit(e, dv))) cf.push_back(x);
-    }
+    for (const ex& part : {sp.primal, sp.dual})
+        for (const ex& x : components(put_values_limit(by_components(part, dv.vectors), dv))) cf.push_back(x);
     // the state x (y0..y2) and y (y3..y5); x^' = a + eps b solved from E reduced modulo eps^2
     std::vector<ex> state, acc;
     for (int i = 0; i < 6; ++i) state.push_back(GiNaC::symbol("y" + std::to_string(i)));
     for (int i = 0; i < 6; ++i) acc.push_back(GiNaC::symbol("a" + std::to_string(i)));
     const ex eps = dual::dual_unit();
-    const ex X = vector_literal(state[0], state[1], state[2]) + eps * vector_literal(state[3], state[4], state[5]);
-    const ex A = vector_literal(acc[0], acc[1], acc[2]) + eps * vector_literal(acc[3], acc[4], acc[5]);
-    vmap sub{{P.unknowns[0], X}, {P.unknowns[1], A}};
-    const dual::dual_parts E = dual::parts(subs_vectors(P.expression, sub));
+    vmap with = dv.vectors;
+    with[P.unknowns[0]] = vector_literal(state[0] + eps * state[3], state[1] + eps * state[4], state[2] + eps * state[5]);
+    with[P.unknowns[1]] = vector_literal(acc[0] + eps * acc[3], acc[1] + eps * acc[4], acc[2] + eps * acc[5]);
+    const dual::dual_parts E = dual::parts(put_values(by_components(P.expression, with), dv));
     GiNaC::lst eqs, unk;
     for (const ex& part : {E.primal, E.dual})
-        for (const ex& x : components(put_values(part.is_zero() ? vector_literal(0, 0, 0) : part, dv)))
-            eqs.append(GiNaC::expand(x) == 0);
+        for (const ex& x : components(part)) eqs.append(GiNaC::expand(x) == 0);
     for (const ex& a : acc) unk.append(a);
     const ex sol = GiNaC::lsolve(eqs, unk);
     if (sol.nops() != 6)
@@ -52,7 +56,7 @@ value verify_dual(const mechanics::cauchy_problem& P, const ex& s, const data_va
     std::vector<double> initial;
     const dual::dual_parts x0 = dual::parts(P.initial[0]);
     for (const ex& part : {x0.primal, x0.dual})
-        for (const ex& x : components(put_values_limit(part.is_zero() ? vector_literal(0, 0, 0) : part, dv)))
+        for (const ex& x : components(put_values_limit(by_components(part, dv.vectors), dv)))
             initial.push_back(to_double(x, b, "the initial value of " + P.name));
     const double prep = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const num::verify_result v = num::verify(cf, t, rhs, state, initial, {}, 0.0, T, n, opt);
