@@ -22,6 +22,7 @@ void register_all_builtins(registry& r) {
     register_signals_builtins(r);
     register_transforms_builtins(r);
     register_identification_builtins(r);
+    register_dual_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {
