@@ -124,7 +124,7 @@ TEST(Interpreter, ElementArithmetic) {
 
 TEST(Interpreter, ElementErrors) {
     test_session t;
-    t.run("C := cplx()\nD := dual()\nu := element(C, [1, 2])\nd := basis(D, 1)");
+    t.run("C := cplx()\nD := dual_test()\nu := element(C, [1, 2])\nd := basis(D, 1)");
     try {
         t.val("u + d");
         FAIL();

@@ -51,7 +51,7 @@ inline void register_test_algebras(lang::registry& r) {
         r.add(std::move(b));
     };
     add("cplx", std::make_shared<complex_test_algebra>());
-    add("dual", std::make_shared<dual_test_algebra>());
+    add("dual_test", std::make_shared<dual_test_algebra>());  // not "dual": the builtin dual(a, b)
 }
 
 /// A session writing into string streams, with the test algebras registered.

@@ -72,9 +72,9 @@ dual_parts parts_of_function(const ex& e) {
     try {
         primal = GiNaC::function(serial, primals).eval();
     } catch (const GiNaC::pole_error&) {
-        throw_pure_dual(e, "is the argument of " + f.get_name() + " at its singular point");
+        throw_pure_dual(n == 1 ? f.op(0) : e, "is the argument of " + f.get_name() + " at its singular point");
     } catch (const std::domain_error&) {
-        throw_pure_dual(e, "is the argument of " + f.get_name() + " at its singular point");
+        throw_pure_dual(n == 1 ? f.op(0) : e, "is the argument of " + f.get_name() + " at its singular point");
     }
     if (!any_dual) return {primal, 0};
     // f(a + eps b) = f(a) + eps sum_i b_i d_i f(a): partial derivatives at fresh symbols.
@@ -175,8 +175,19 @@ dual_parts parts_of(const ex& e) {
 
 dual_parts parts(const ex& e) { return parts_of(e); }
 
+namespace {
+// relations, lists and matrices: each side, item or entry on its own
+struct reduce_map : GiNaC::map_function {
+    ex operator()(const ex& e) override { return reduce(e); }
+};
+}  // namespace
+
 ex reduce(const ex& e) {
     if (!e.has(dual_unit())) return e;
+    if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e) || is_a<GiNaC::matrix>(e)) {
+        reduce_map m;
+        return e.map(m);
+    }
     dual_parts p = parts_of(e);
     return make_dual(p.primal, p.dual);
 }
@@ -189,6 +200,10 @@ ex make_dual(const ex& a, const ex& b) {
         throw type_error("make_dual(a, b): the parts must be free of the dual unit eps");
     if (!a.is_zero() && !b.is_zero() && is_vector(a) != is_vector(b))
         throw type_error("make_dual(a, b): a and b must both be scalars or both be vectors");
+    // two vector literals (or one and 0): one literal with dual components, [1, eps, 0]
+    if ((is_a<GiNaC::matrix>(a) || a.is_zero()) && (is_a<GiNaC::matrix>(b) || b.is_zero()) &&
+        (is_a<GiNaC::matrix>(a) || is_a<GiNaC::matrix>(b)))
+        return (a + dual_unit() * b).evalm();
     return a + dual_unit() * b;
 }
 

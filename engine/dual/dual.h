@@ -45,13 +45,15 @@ struct dual_parts {
 /// point of, a pure dual quantity (1/eps, log(eps b)); domain_error when a primal
 /// divisor cannot be decided nonzero.
 dual_parts parts(const GiNaC::ex& e);
-/// primal + eps dual, with both parts left as parts() gives them.
+/// primal + eps dual, with both parts left as parts() gives them. A relation,
+/// a list or a matrix is reduced side by side, item by item, entry by entry.
 GiNaC::ex reduce(const GiNaC::ex& e);
 /// The primal part (eps = 0 after reduction).
 GiNaC::ex primal(const GiNaC::ex& e);
 /// The dual part (the coefficient of eps after reduction).
 GiNaC::ex dual_part(const GiNaC::ex& e);
 /// a + eps b (a, b free of eps; both scalars or both vectors; 0 counts as either).
+/// Two vector literals give one literal with dual components ([1, eps, 0]).
 GiNaC::ex make_dual(const GiNaC::ex& a, const GiNaC::ex& b);
 
 /// Dual products of dual vectors, reduced: (a + eps a') x (b + eps b') =

@@ -143,6 +143,7 @@ void register_plot_builtins(registry& r);         // lang/builtins_plot.cpp: plo
 void register_transforms_builtins(registry& r);  // lang/builtins_transforms.cpp: laplace, inverse_laplace, transform
 void register_identification_builtins(registry& r);  // lang/builtins_identification.cpp: identify, operational matrices
 void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling
+void register_dual_builtins(registry& r);         // lang/builtins_dual.cpp: dual, primal, dual_part
 
 /// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).
 value solve_problem(const value& p);

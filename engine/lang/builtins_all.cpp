@@ -3,12 +3,9 @@
 #include <sstream>
 
 #include "symrep/lang/builtins.h"
-#include "symrep/lang/builtins_frames.h"
 #include "symrep/lang/interpreter.h"
 
 namespace symrep::lang {
-
-void register_screw_builtins(registry& r);  // lang/builtins_screw.cpp: screw motion, dual quaternions
 
 void register_all_builtins(registry& r) {
     register_core_builtins(r);
@@ -27,6 +24,7 @@ void register_all_builtins(registry& r) {
     register_identification_builtins(r);
     register_frames_builtins(r);
     register_screw_builtins(r);
+    register_dual_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "symrep/dual/dual.h"
 #include "symrep/scalar/scalar.h"
 #include "symrep/syntax/parser.h"
 #include "symrep/output/printer.h"
@@ -95,6 +96,22 @@ long index_value(const value& v, std::size_t size) {
     return k.to_long();
 }
 
+/// The unary operators |a| (norm, absolute value), +a and -a.
+value unary_op(const std::string& op, const value& a) {
+    if (op == "|") {  // |a|: the norm sqrt(a . a) of a vector, the absolute value of a scalar
+        if (is_triple(a)) return value(norm(as_literal(a)));  // |[3, 4, 12]|
+        if (a.is_ex() && is_vector(a.as_ex())) return value(norm(a.as_ex()));
+        if (a.is_ex() && !is_a<GiNaC::relational>(a.as_ex()) && !is_a<GiNaC::matrix>(a.as_ex()))
+            return value(GiNaC::abs(a.as_ex()));
+        throw type_error("|...| needs a vector or a scalar expression, not " + a.a_kind());
+    }
+    if (op == "+") {
+        if (a.is_ex() || a.is_element() || a.is_list()) return a;
+        throw type_error("unary '+' needs a number, expression, element or list, not " + a.a_kind());
+    }
+    return negate(a);
+}
+
 }  // namespace
 
 std::vector<std::string> similar_builtin_names(const registry& r, const std::string& name, std::size_t limit) {
@@ -160,7 +177,7 @@ value session::call(const node& n) {
         }
         ~options_scope() { c.named_options = std::move(saved); }
     } scope(*this, std::move(named));
-    return b->fn(args, *this);
+    return reduce_dual(b->fn(args, *this));  // sin(a + eps*b) = sin(a) + eps*b*cos(a) (dual/dual.h)
 }
 
 value session::iterate(const builtin& b, const node& n) {
@@ -218,6 +235,7 @@ value session::eval_inner(const node& n) {
                 throw type_error(n.text + " has no value: its assignment at " + f->second + " failed");
             if (const value* v = get(n.text)) return *v;
             if (n.text == "pi") return ex(GiNaC::Pi);
+            if (n.text == "eps") return dual::dual_unit();  // the dual unit, eps^2 = 0 (dual/dual.h)
             if (n.text == "I") return ex(GiNaC::I);
             if (n.text == "Euler") return ex(GiNaC::Euler);
             if (n.text == "Catalan") return ex(GiNaC::Catalan);
@@ -271,19 +289,8 @@ value session::eval_inner(const node& n) {
             return results_[k - 1];
         }
         case node::unary: {
-            value a = eval(*n.kids[0]);
-            if (n.text == "|") {  // |a|: the norm sqrt(a . a) of a vector, the absolute value of a scalar
-                if (is_triple(a)) return value(norm(as_literal(a)));  // |[3, 4, 12]|
-                if (a.is_ex() && is_vector(a.as_ex())) return value(norm(a.as_ex()));
-                if (a.is_ex() && !is_a<GiNaC::relational>(a.as_ex()) && !is_a<GiNaC::matrix>(a.as_ex()))
-                    return value(GiNaC::abs(a.as_ex()));
-                throw type_error("|...| needs a vector or a scalar expression, not " + a.a_kind());
-            }
-            if (n.text == "+") {
-                if (a.is_ex() || a.is_element() || a.is_list()) return a;
-                throw type_error("unary '+' needs a number, expression, element or list, not " + a.a_kind());
-            }
-            return negate(a);
+            const value a = eval(*n.kids[0]);
+            return reduce_dual(unary_op(n.text, a));  // |a + eps*b| = |a| + eps*(a . b)/|a| (dual/dual.h)
         }
         case node::binary: {
             value a = eval(*n.kids[0]);
@@ -300,7 +307,7 @@ value session::eval_inner(const node& n) {
                 if (!v.is_ex()) return false;
                 const ex& e = v.as_ex();
                 return !is_a<GiNaC::relational>(e) && !is_a<GiNaC::lst>(e) && !has_matrix(e) &&
-                       vector_symbols(e).empty();
+                       vector_symbols(e).empty() && !dual::has_dual_unit(e);  // dual: reduced by binary_op
             };
             value acc = eval(*n.kids[0]);
             std::optional<bool> acc_plain;  // plain(acc), computed once per value of acc

@@ -30,7 +30,7 @@ std::vector<std::string> completions(const session& s, const std::string& prefix
     };
     for (const auto* b : s.builtins().all()) consider(b->name);
     for (const auto& v : s.variable_names()) consider(v);
-    for (const char* k : {"vector", "positive", "true", "false", "pi", "I"}) consider(k);
+    for (const char* k : {"vector", "positive", "true", "false", "pi", "I", "eps"}) consider(k);
     if (commands)
         for (const char* c : {"help", "quit", "exit"}) consider(c);
     std::sort(out.begin(), out.end());

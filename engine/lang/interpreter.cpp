@@ -395,6 +395,10 @@ void session::declare(const node& n) {
         if (get(k->text))
             throw script_error("cannot declare '" + k->text + "': it is a variable (assigned with :=)",
                                {current_file(), k->line, k->column});
+        if (k->text == "eps")  // the constant eps would still be read, not the declared name
+            throw script_error("cannot declare 'eps': it is the dual unit (eps^2 = 0); assign eps := ... first to "
+                               "use the name for something else, or choose another name",
+                               {current_file(), k->line, k->column});
         if (n.text == "vector") {
             if (!k->kids.empty()) {  // vector w(t): a vector function of t
                 try {

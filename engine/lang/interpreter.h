@@ -262,6 +262,8 @@ std::string reference_markdown(const registry& r);
 /// + - * / ^ = == != < > <= >=. Throws type_error / algebra_error.
 value binary_op(const std::string& op, const value& a, const value& b);
 value negate(const value& a);
+/// v with every expression in the dual unit eps reduced modulo eps^2 (dual/dual.h), lists item by item.
+value reduce_dual(const value& v);
 /// True for a list of three expressions: the vector literal [x, y, z] where a vector is expected.
 bool is_triple(const value& v);
 /// The vector literal (a 3x1 matrix) of such a list.

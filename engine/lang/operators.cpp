@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 
+#include "symrep/dual/dual.h"
 #include "symrep/scalar/floats.h"
 #include "symrep/scalar/equality.h"
 #include "symrep/scalar/scalar.h"
@@ -300,6 +301,13 @@ equality decide_vectors(const ex& x, const ex& y) {
 }  // namespace
 
 equality compare_values(const value& a, const value& b) {
+    if (a.is_ex() && b.is_ex() && (dual::has_dual_unit(a.as_ex()) || dual::has_dual_unit(b.as_ex())) &&
+        !is_a<GiNaC::relational>(a.as_ex()) && !is_a<GiNaC::relational>(b.as_ex()) && !has_matrix(a.as_ex()) &&
+        !has_matrix(b.as_ex())) {
+        // dual quantities (dual/dual.h): equal when their primal and their dual parts are
+        const dual::dual_parts x = dual::parts(a.as_ex()), y = dual::parts(b.as_ex());
+        return all_of({compare_values(value(x.primal), value(y.primal)), compare_values(value(x.dual), value(y.dual))});
+    }
     if (a.is_ex() && b.is_ex()) {
         // floats as the decimals they print as, compared exactly (scalar/floats.h; docs/language.md, "Floats")
         const ex x = floats_as_decimals(a.as_ex());
@@ -381,8 +389,51 @@ bool values_equal(const value& a, const value& b) {
     return e.result == truth::yes;
 }
 
+namespace {
+value plain_binary_op(const std::string& op, const value& a, const value& b);
 
+/// True when v is or holds (in a list) an expression in the dual unit eps.
+bool holds_dual(const value& v) {
+    if (v.is_ex()) return dual::has_dual_unit(v.as_ex());
+    if (v.is_list()) return std::any_of(v.as_list().begin(), v.as_list().end(), holds_dual);
+    return false;
+}
+}  // namespace
+
+value reduce_dual(const value& v) {
+    if (v.is_ex()) return dual::has_dual_unit(v.as_ex()) ? value(dual::reduce(v.as_ex())) : v;
+    if (v.is_list()) {
+        const list& l = v.as_list();
+        if (std::none_of(l.begin(), l.end(), [](const value& x) { return x.is_ex() && dual::has_dual_unit(x.as_ex()); }) &&
+            std::none_of(l.begin(), l.end(), [](const value& x) { return x.is_list(); }))
+            return v;
+        list r;
+        r.reserve(l.size());
+        for (const value& x : l) r.push_back(reduce_dual(x));
+        return r;
+    }
+    return v;
+}
+
+// Every operation on dual quantities (expressions in the dual unit eps, dual/dual.h)
+// is reduced modulo eps^2; a pure dual divisor is a zero divisor (eps * eps = 0).
 value binary_op(const std::string& op, const value& a, const value& b) {
+    const bool dual_b = b.is_ex() && dual::has_dual_unit(b.as_ex());
+    if (!dual_b && !holds_dual(a) && !holds_dual(b)) return plain_binary_op(op, a, b);
+    if ((op == "<" || op == ">" || op == "<=" || op == ">=") && a.is_ex() && b.is_ex())
+        throw domain_error("cannot compare " + print_ex(a.as_ex()) + " and " + print_ex(b.as_ex()) + " by '" + op +
+                           "': dual numbers are not ordered");
+    if (op == "/" && dual_b && !has_matrix(b.as_ex()) && !is_a<GiNaC::relational>(b.as_ex()) &&
+        !is_nonzero_generic(dual::primal(b.as_ex()), "the primal part of the divisor " + print_ex(b.as_ex())))
+        throw zero_divisor_error("division by the dual number " + print_ex(b.as_ex()) +
+                                     ": its primal part is 0, so it is a zero divisor (eps * eps = 0)",
+                                 {});
+    return reduce_dual(plain_binary_op(op, a, b));
+}
+
+namespace {
+
+value plain_binary_op(const std::string& op, const value& a, const value& b) {
     // vectors (thesis Ch. VI): a x b, a . b; [x, y, z] next to a vector is a literal
     if (op == "x" || op == ".") {
         const ex u = vector_operand(op, a, "left"), v = vector_operand(op, b, "right");
@@ -482,5 +533,7 @@ value binary_op(const std::string& op, const value& a, const value& b) {
     if (a.is_string() && b.is_string() && op == "+") return a.as_string() + b.as_string();
     bad_operands(op, a, b);
 }
+
+}  // namespace
 
 }  // namespace symrep::lang

@@ -1,6 +1,8 @@
 // symrep/output/formats.cpp -- LaTeX, C, Python and JSON output (see formats.h).
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <optional>
 #include <set>
 #include <regex>
 #include <sstream>
@@ -8,6 +10,7 @@
 #include "symrep/output/formats.h"
 
 #include "symrep/core/error.h"
+#include "symrep/dual/dual.h"
 
 #include "symrep/output/printer.h"
 #include "symrep/output/precedence.h"
@@ -216,8 +219,45 @@ std::string vec_operand(const ex& a) {
     return lparen(o, l_power);
 }
 
+// A dual quantity p + eps d grouped as p + \varepsilon d (print_ex's dual_text in LaTeX).
+std::optional<printed> lx_dual(const ex& e) {
+    dual::dual_parts p;
+    try {
+        p = dual::parts(e);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (p.dual.is_zero()) return lx(p.primal);
+    ex d = p.dual;
+    bool negative = false;
+    if (!is_a<GiNaC::add>(d)) {
+        numeric c;
+        std::vector<ex> rest;
+        split_coefficient(d, c, rest);
+        if (negative_numeric(c)) {
+            negative = true;
+            d = -d;
+        }
+    }
+    std::string body;
+    if (d.is_equal(1)) body = "\\varepsilon";
+    else if (is_a<numeric>(d)) body = lx_product(ex_to<numeric>(d), {dual::dual_unit()}).text;
+    else {
+        const printed q = lx(d);
+        const bool wrap = q.lvl <= l_sum || (q.lvl < l_power && (involves_vectors(d) || is_vector_literal(d)));
+        if (wrap) body = "\\varepsilon \\left(" + q.text + "\\right)";
+        else body = (std::isdigit(static_cast<unsigned char>(q.text[0])) ? "\\varepsilon \\cdot " : "\\varepsilon ") + q.text;
+    }
+    if (p.primal.is_zero()) return printed{(negative ? "-" : "") + body, negative ? l_sum : l_product};
+    return printed{lx(p.primal).text + (negative ? " - " : " + ") + body, l_sum};
+}
+
 printed lx(const ex& e) {
     if (is_a<numeric>(e)) return lx_numeric(ex_to<numeric>(e));
+    if (e.is_equal(dual::dual_unit())) return {"\\varepsilon", l_atom};
+    if ((is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e) || is_a<GiNaC::power>(e) || is_a<GiNaC::function>(e)) &&
+        dual::has_dual_unit(e))
+        if (const std::optional<printed> r = lx_dual(e)) return *r;
     if (is_a<GiNaC::symbol>(e)) return {latex_name(ex_to<GiNaC::symbol>(e).get_name(), is_vector_symbol(e)), l_atom};
     if (is_a<GiNaC::constant>(e)) {
         std::ostringstream os;

@@ -2,12 +2,14 @@
 #include "symrep/output/printer.h"
 #include "symrep/output/precedence.h"
 
+#include "symrep/dual/dual.h"
 #include "symrep/scalar/floats.h"
 #include "symrep/scalar/scalar.h"
 #include "symrep/vector/vector.h"
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -446,7 +448,63 @@ namespace {
 const bool message_printer_registered = (set_message_printer(&print_ex), true);
 }  // namespace
 
+namespace {
+
+// A dual quantity p + eps d (dual/dual.h) grouped: the primal part first, then eps
+// times the dual part, each in the canonical form; relations side by side, lists and
+// matrices entry by entry. nullopt where e has no dual parts (printed as it is).
+std::optional<std::string> dual_text(const ex& e) {
+    if (is_a<GiNaC::relational>(e)) return print_ex(e.op(0)) + relation_op(e) + print_ex(e.op(1));
+    if (is_a<GiNaC::lst>(e)) {
+        std::string s = "[";
+        for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + print_ex(e.op(i));
+        return s + "]";
+    }
+    if (is_vector_literal(e))  // [1, eps, 0], as the list it is written as
+        return "[" + print_ex(e.op(0)) + ", " + print_ex(e.op(1)) + ", " + print_ex(e.op(2)) + "]";
+    if (is_a<GiNaC::matrix>(e)) {
+        const GiNaC::matrix& m = ex_to<GiNaC::matrix>(e);
+        std::string s = "matrix([";
+        for (unsigned r = 0; r < m.rows(); ++r) {
+            s += r ? ", [" : "[";
+            for (unsigned c = 0; c < m.cols(); ++c) s += (c ? ", " : "") + print_ex(m(r, c));
+            s += "]";
+        }
+        return s + "])";
+    }
+    dual::dual_parts p;
+    try {
+        p = dual::parts(e);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (p.dual.is_zero()) return print_ex(p.primal);
+    ex d = p.dual;
+    bool negative = false;
+    if (!is_a<GiNaC::add>(d)) {
+        numeric c;
+        std::vector<ex> rest;
+        split_term(d, c, rest);
+        if (looks_negative(c)) {
+            negative = true;
+            d = -d;
+        }
+    }
+    std::string body;
+    if (d.is_equal(1)) body = "eps";
+    else if (is_a<numeric>(d)) body = pr(dual::dual_unit() * d).text;  // 2*eps, eps/2
+    else if (involves_vectors(d) || is_vector_literal(d))
+        body = is_vector_symbol(d) || is_vector_literal(d) ? "eps*" + print_ex(d) : "eps*(" + print_ex(d) + ")";
+    else body = "eps*" + paren(pr(d), l_product);
+    if (p.primal.is_zero()) return (negative ? "-" : "") + body;
+    return print_ex(p.primal) + (negative ? " - " : " + ") + body;
+}
+
+}  // namespace
+
 std::string print_ex(const ex& e) {
+    if (dual::has_dual_unit(e))
+        if (const std::optional<std::string> s = dual_text(e)) return *s;
     // integral objects (a scalar Duhamel integral of mechanics/, int_0^t f dtau): the vector printer's notation
     const bool integral = std::any_of(e.preorder_begin(), e.preorder_end(),
                                       [](const ex& x) { return is_a<GiNaC::integral>(x); });

@@ -35,6 +35,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "dual/dual.h"
 #include "lang/help.h"
 #include "lang/interpreter.h"
 #include "lang/print_value.h"
@@ -321,7 +322,7 @@ py_value call(const state_ptr& st, const std::string& name, const std::vector<la
             ~options_scope() { c.named_options = std::move(saved); }
         } scope{st->s, std::move(st->s.named_options)};
         st->s.named_options = options;
-        return b->fn(args, st->s);
+        return lang::reduce_dual(b->fn(args, st->s));  // as session::call: dual values reduced mod eps^2
     });
 }
 
@@ -737,6 +738,8 @@ py::object tree_of(const lang::value& v) {
         return py::make_tuple("list", l);
     }
     if (v.is_ex()) {
+        // a dual quantity (eps^2 = 0, dual/dual.h) has none either: SymPy's eps would square to eps^2
+        if (dual::has_dual_unit(v.as_ex())) return py::make_tuple("dual", lang::print_value(v, false));
         // a vector expression (x, ., |v|) has no SymPy counterpart: named as a whole
         for (auto it = v.as_ex().preorder_begin(); it != v.as_ex().preorder_end(); ++it)
             if (is_vector_symbol(*it))
@@ -929,7 +932,7 @@ PYBIND11_MODULE(_symrep, m) {
                 // a name the language reads as a symbol: letters, digits, _; no keyword or builtin constant
                 bool ok = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
                 for (const char ch : name) ok = ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
-                for (const char* k : {"vector", "positive", "true", "false", "pi", "I"}) ok = ok && name != k;
+                for (const char* k : {"vector", "positive", "true", "false", "pi", "I", "eps"}) ok = ok && name != k;
                 if (!ok)
                     throw py::value_error("not a name of the symrep language: " + py::repr(py::str(name)).cast<std::string>());
                 return py_value{lang::value(st->s.symbol(name)), st};

@@ -147,6 +147,14 @@ def set_default_session(session: Optional[Session]) -> Optional[Session]:
     return previous
 
 
+def __getattr__(name):
+    """symrep.eps: the dual unit (eps^2 = 0) as a Value of the default session, the same
+    as default_session().eval("eps") where that session has not assigned eps."""
+    if name == "eps":
+        return default_session().call("dual", 0, 1)
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))
+
+
 from ._sympy import from_sympy  # noqa: E402
 
 __all__ = ["Session", "Value", "Compiled", "ValueLike", "Error", "ParseError", "LanguageTypeError",

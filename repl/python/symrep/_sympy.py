@@ -76,6 +76,9 @@ def _to(node, sympy):
         raise _no_counterpart("a symrep string", repr(node[1]))
     if tag == "vector":
         raise _no_counterpart(node[1], node[2])
+    if tag == "dual":
+        raise TypeError("a dual number has no SymPy counterpart (symrep's eps squares to 0, a SymPy symbol "
+                        "does not): %s; convert primal(v) and dual_part(v) separately" % node[1])
     raise _no_counterpart("a symrep " + node[1], node[2])
 
 
@@ -144,6 +147,9 @@ def _from(e, s, sympy, Value):
     if e is sympy.I:
         return s.eval("I")
     if isinstance(e, sympy.Symbol):
+        if e.name == "eps":
+            raise TypeError("from_sympy: the SymPy symbol eps would be symrep's dual unit eps (eps^2 = 0), which "
+                            "it is not; rename it, or build a dual number with symrep's dual(a, b)")
         try:
             return s.symbol(e.name)
         except ValueError:
