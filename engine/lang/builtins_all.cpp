@@ -7,6 +7,8 @@
 
 namespace symrep::lang {
 
+void register_relative_pose_builtins(registry& r);  // lang/builtins_relative_pose.cpp: relative_pose
+
 void register_all_builtins(registry& r) {
     register_core_builtins(r);
     register_algebra_builtins(r);
@@ -22,6 +24,7 @@ void register_all_builtins(registry& r) {
     register_signals_builtins(r);
     register_transforms_builtins(r);
     register_identification_builtins(r);
+    register_relative_pose_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {
