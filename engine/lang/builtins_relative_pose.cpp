@@ -28,7 +28,7 @@ using args_t = std::vector<value>;
 
 namespace {
 
-const char* const section = "Rigid bodies (dual vectors)";
+const char* const section = "Vectors and mechanics";
 
 // A value as an expression: a list [a, b, c] of expressions is the vector literal.
 ex vector_value(const value& v, const builtin& b, const std::string& what) {
@@ -155,7 +155,7 @@ value builtin_relative_pose(const builtin& b, const args_t& a, context& c) {
     P.V0 = number_vector(a[2], b, "V0");
     P.start.position = number_vector(a[3], b, "rho0");
     P.start.velocity = number_vector(a[4], b, "rho0'");
-    P.start.attitude = rotation_value(a[5], b, "the initial relative attitude R0");
+    P.start.attitude = rotation_value(a[5], b, "the initial relative attitude A0");
     // the time: t = T or t = [T1, T2, ...]
     const ex& tr = arg_ex(a, 8, b);
     if (!GiNaC::is_a<GiNaC::relational>(tr) || !GiNaC::is_a<GiNaC::symbol>(tr.lhs()))

@@ -154,7 +154,7 @@ std::vector<pose_state> relative_pose(const relative_pose_problem& P, const std:
     const pose_state& s0 = P.start;
     if (!P.R0.allFinite() || !P.V0.allFinite() || !s0.position.allFinite() || !s0.velocity.allFinite())
         throw domain_error("relative_pose: the initial state must be finite");
-    require_rotation(s0.attitude, "the initial relative attitude R(0)");
+    require_rotation(s0.attitude, "the initial relative attitude A(0)");
     Eigen::Matrix3d CL0;
     if (P.leader_axes_lvlh) {
         require_rotation(P.leader_offset, "the leader's attitude relative to its LVLH frame");
