@@ -25,6 +25,7 @@ void register_all_builtins(registry& r) {
     register_frames_builtins(r);
     register_screw_builtins(r);
     register_dual_builtins(r);
+    register_relative_pose_builtins(r);
 }
 
 std::string reference_markdown(const registry& r) {

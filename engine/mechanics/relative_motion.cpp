@@ -47,6 +47,28 @@ Eigen::Vector3d narrowed(const num::triple_of<wide>& a) {
 
 }  // namespace
 
+orbit_pair kepler_pair(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0, const Eigen::Vector3d& d0,
+                       const Eigen::Vector3d& dv0, double t) {
+    if (!(mu > 0) || !std::isfinite(mu)) throw domain_error("kepler: mu must be a positive number");
+    if (!R0.allFinite() || !V0.allFinite() || !d0.allFinite() || !dv0.allFinite() || !std::isfinite(t))
+        throw domain_error("kepler: the initial state and the time must be finite");
+    // both orbits in closed form (the inertial problems of Thm VI.3.2.1) at 50 digits, then
+    // their difference rounded once: in doubles, R0 + d0 and r_c - R lose the digits of
+    // |R|/|rho| (1e7 at a separation of 1e-7 |R|; the differential harness saw 3e-7 there)
+    const num::triple_of<wide> R0w = widened(R0), V0w = widened(V0), d0w = widened(d0), dv0w = widened(dv0);
+    num::triple_of<wide> rc0, vc0;
+    for (int i = 0; i < 3; ++i) rc0[i] = R0w[i] + d0w[i], vc0[i] = V0w[i] + dv0w[i];
+    const wide muw(mu), tw(t);
+    const num::kepler_state_of<wide> first = num::kepler_propagate_of<wide>(muw, R0w, V0w, tw);
+    const num::kepler_state_of<wide> second = num::kepler_propagate_of<wide>(muw, rc0, vc0, tw);
+    orbit_pair out{narrowed(first.position), narrowed(first.velocity), difference(second.position, first.position),
+                   difference(second.velocity, first.velocity)};
+    if (!out.R.allFinite() || !out.V.allFinite() || !out.d.allFinite() || !out.dv.allFinite())
+        throw domain_error("kepler: the orbit reaches the centre of the field before t (a radial fall) or Kepler's "
+                           "equation did not converge");
+    return out;
+}
+
 relative_state relative_motion_exact(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
                                      const relative_state& start, double t) {
     if (!(mu > 0) || !std::isfinite(mu)) throw domain_error("kepler: mu must be a positive number");
@@ -57,23 +79,10 @@ relative_state relative_motion_exact(double mu, const Eigen::Vector3d& R0, const
     const Eigen::Matrix3d C0 = lvlh_axes(R0, V0).transpose();
     const Eigen::Vector3d d0 = C0 * start.position;
     const Eigen::Vector3d dv0 = C0 * start.velocity + lvlh_rate(R0, V0).cross(d0);
-    // both orbits in closed form (the inertial problems of Thm VI.3.2.1) at 50 digits, then
-    // their difference rounded once: in doubles, R0 + d0 and r_c - R lose the digits of
-    // |R|/|rho| (1e7 at a separation of 1e-7 |R|; the differential harness saw 3e-7 there)
-    const num::triple_of<wide> R0w = widened(R0), V0w = widened(V0), d0w = widened(d0), dv0w = widened(dv0);
-    num::triple_of<wide> rc0, vc0;
-    for (int i = 0; i < 3; ++i) rc0[i] = R0w[i] + d0w[i], vc0[i] = V0w[i] + dv0w[i];
-    const wide muw(mu), tw(t);
-    const num::kepler_state_of<wide> target = num::kepler_propagate_of<wide>(muw, R0w, V0w, tw);
-    const num::kepler_state_of<wide> chaser = num::kepler_propagate_of<wide>(muw, rc0, vc0, tw);
-    const Eigen::Vector3d R = narrowed(target.position), V = narrowed(target.velocity);
-    if (!R.allFinite() || !V.allFinite())
-        throw domain_error("kepler: the orbit reaches the centre of the field before t (a radial fall) or Kepler's "
-                           "equation did not converge");
-    const Eigen::Matrix3d Ct = lvlh_axes(R, V);
-    const Eigen::Vector3d d = difference(chaser.position, target.position);
-    const Eigen::Vector3d w = lvlh_rate(R, V);
-    return {Ct * d, Ct * (difference(chaser.velocity, target.velocity) - w.cross(d))};
+    const orbit_pair o = kepler_pair(mu, R0, V0, d0, dv0, t);
+    const Eigen::Matrix3d Ct = lvlh_axes(o.R, o.V);
+    const Eigen::Vector3d w = lvlh_rate(o.R, o.V);
+    return {Ct * o.d, Ct * (o.dv - w.cross(o.d))};
 }
 
 relative_state clohessy_wiltshire(double n, const relative_state& s, double t) {

@@ -40,6 +40,18 @@ Eigen::Matrix3d lvlh_axes(const Eigen::Vector3d& R, const Eigen::Vector3d& V);
 /// The angular velocity of the LVLH frame in inertial components: (R x V)/|R|^2.
 Eigen::Vector3d lvlh_rate(const Eigen::Vector3d& R, const Eigen::Vector3d& V);
 
+/// Two Kepler orbits at time t: the first from (R0, V0), the second from (R0 + d0, V0 + dv0)
+/// (inertial components). R, V the first; d, dv the second minus the first. Both are
+/// propagated at 50 digits (numeric/kepler_universal.h) and their difference rounded once,
+/// so d keeps full double accuracy however small |d0| is against |R0|. domain_error for bad
+/// data or an orbit that reaches the centre before t.
+struct orbit_pair {
+    Eigen::Vector3d R, V;    ///< the first orbit
+    Eigen::Vector3d d, dv;   ///< second minus first
+};
+orbit_pair kepler_pair(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0, const Eigen::Vector3d& d0,
+                       const Eigen::Vector3d& dv0, double t);
+
 /// Exact relative motion: target (R0, V0) and a chaser starting at rho0 with
 /// relative velocity drho0 (both in the LVLH frame at t = 0), at time t.
 relative_state relative_motion_exact(double mu, const Eigen::Vector3d& R0, const Eigen::Vector3d& V0,
