@@ -2,7 +2,7 @@
 # symrep set-up, build and run. Usage (as root on Debian, from anywhere):
 #   bash build.sh main   install what is missing, build, run the main derivation script
 #   bash build.sh test   install what is missing, build, run every test (ctest), then the
-#                        robustness test under AddressSanitizer + UBSan (10000 inputs)
+#                        robustness test under AddressSanitizer + LeakSanitizer (10000 inputs)
 #   bash build.sh deps   only install the Debian packages that are missing
 #   bash build.sh build  deps + build only
 #   bash build.sh fuzz [N]  the robustness run under AddressSanitizer + UBSan:
@@ -10,14 +10,15 @@
 #   bash build.sh docs   deps + the program and the Python module, then the documentation
 #                        site (Sphinx, warnings are errors) into BUILD_DIR/docs/html
 # Environment: BUILD_DIR (default: build), ASAN_BUILD_DIR (default: BUILD_DIR-asan),
-# JOBS (default: number of cores + 1).
+# SANITIZE_BUILD_DIR (fuzz; default: BUILD_DIR-sanitize), JOBS (default: number of cores + 1).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
 BUILD_DIR=${BUILD_DIR:-build}
 # one job more than cores: a link (single-threaded) or a wait on the disk leaves no core idle
 JOBS=${JOBS:-$(( $(nproc 2>/dev/null || echo 2) + 1 ))}
-ASAN_BUILD_DIR=${ASAN_BUILD_DIR:-$BUILD_DIR-asan}
+ASAN_BUILD_DIR=${ASAN_BUILD_DIR:-$BUILD_DIR-asan}            # test: AddressSanitizer (+ LeakSanitizer)
+SANITIZE_BUILD_DIR=${SANITIZE_BUILD_DIR:-$BUILD_DIR-sanitize}  # fuzz: AddressSanitizer and UBSan
 MAIN_SCRIPT=examples/foucault.symrep
 
 # What the program needs to build and run the main script (bash build.sh main installs only these)
@@ -79,11 +80,12 @@ build() {
 # The robustness test (tests/test_robustness.cpp; docs/testing.md) built with
 # -DSYMREP_SANITIZE=ON, on $1 inputs (default: its own, 10000): a crash, a
 # sanitizer report or a runaway statement fails it.
+# sanitized_robustness SANITIZERS DIR [LINES]: the robustness run built with -fsanitize=SANITIZERS
 sanitized_robustness() {
-    cmake -S . -B "$ASAN_BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSYMREP_SANITIZE=ON -DSYMREP_BUILD_BENCH=OFF \
-          -DSYMREP_BUILD_PYTHON=OFF >/dev/null
-    cmake --build "$ASAN_BUILD_DIR" -j"$JOBS" --target symrep_robustness
-    SYMREP_FUZZ_LINES=${1:-} "$ASAN_BUILD_DIR"/symrep_robustness
+    cmake -S . -B "$2" -DCMAKE_BUILD_TYPE=Release -DSYMREP_SANITIZE=ON -DSYMREP_SANITIZERS="$1" \
+          -DSYMREP_BUILD_BENCH=OFF -DSYMREP_BUILD_PYTHON=OFF >/dev/null
+    cmake --build "$2" -j"$JOBS" --target symrep_robustness
+    SYMREP_FUZZ_LINES=${3:-} "$2"/symrep_robustness
 }
 
 case "${1:-}" in
@@ -91,8 +93,8 @@ case "${1:-}" in
     build) deps; build ;;
     main)  deps "${MAIN_PACKAGES[@]}"; build_main; "$BUILD_DIR"/symrep "$MAIN_SCRIPT" ;;
     test)  deps; build; ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS"
-           sanitized_robustness ;;
-    fuzz)  deps; sanitized_robustness "${2:-100000}" ;;
+           sanitized_robustness address "$ASAN_BUILD_DIR" ;;
+    fuzz)  deps; sanitized_robustness address,undefined "$SANITIZE_BUILD_DIR" "${2:-100000}" ;;
     docs)  deps; build symrep _symrep; /usr/bin/python3 docs/build_site.py "$BUILD_DIR" ;;
     *) sed -n '2,13p' "$0" >&2; exit 2 ;;
 esac

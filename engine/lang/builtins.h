@@ -144,6 +144,9 @@ void register_transforms_builtins(registry& r);  // lang/builtins_transforms.cpp
 void register_identification_builtins(registry& r);  // lang/builtins_identification.cpp: identify, operational matrices
 void register_signals_builtins(registry& r);      // lang/builtins_signals.cpp: represent, signal, sampling
 void register_dual_builtins(registry& r);         // lang/builtins_dual.cpp: dual, primal, dual_part
+void register_screw_builtins(registry& r);        // lang/builtins_screw.cpp: screw motion, dual quaternions
+void register_frames_builtins(registry& r);       // lang/builtins_frames.cpp: moving_frame
+void register_relative_pose_builtins(registry& r);  // lang/builtins_relative_pose.cpp: relative_pose, pose_dual_quaternion
 
 /// solve(P) for a problem made by ode(...): the exact solution (lang/builtins_mechanics.cpp).
 value solve_problem(const value& p);

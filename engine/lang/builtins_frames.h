@@ -6,9 +6,6 @@
 
 namespace symrep::lang {
 
-/// moving_frame(P, w, o).
-void register_frames_builtins(registry& r);
-
 /// check(P, s) of a problem seen from a moving frame whose solution is a reduction object (psi
 /// numeric): [CS21] Thm 11 proved for this problem and an arbitrary psi (prove_moving_frame).
 value check_moving_frame(const builtin& b, const mechanics::cauchy_problem& P, context& c);

@@ -24,9 +24,9 @@ value verify_dual(const mechanics::cauchy_problem& P, const ex& s, const data_va
     dv.scalars.erase(P.t);
     // a vector expression by components (a 3x1 matrix), the vectors of `with` put in
     const auto by_components = [](const ex& e, const vmap& with) {
-        const ex c = vector_symbols(e).empty() ? e : subs_components(e, with);
-        if (GiNaC::is_a<GiNaC::matrix>(c)) return c;
-        const ex k = canonical(c);
+        const ex comp = vector_symbols(e).empty() ? e : subs_components(e, with);
+        if (GiNaC::is_a<GiNaC::matrix>(comp)) return comp;
+        const ex k = canonical(comp);
         return k.is_zero() ? vector_literal(0, 0, 0) : k.evalm();
     };
     // the closed form's parts, six components

@@ -10,21 +10,13 @@
 #include <unordered_map>
 
 #include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 #include "symrep/numeric/certified.h"
 #include "symrep/numeric/reference.h"
 
 namespace symrep::num {
 
 namespace {
-
-/// A printed expression, cut to a length fit for an error message.
-std::string bounded(const GiNaC::ex& e, std::size_t max_len = 120) {
-    std::ostringstream os;
-    os << e;
-    std::string s = os.str();
-    if (s.size() > max_len) s = s.substr(0, max_len - 3) + "...";
-    return s;
-}
 
 struct function_entry {
     const char* name;
@@ -310,7 +302,7 @@ private:
 
     static double real_value(const GiNaC::numeric& n, const GiNaC::ex& where) {
         if (!n.is_real())
-            throw domain_error("cannot evaluate numerically: complex value " + bounded(where) +
+            throw domain_error("cannot evaluate numerically: complex value " + message_text(where) +
                                " (the evaluator works in real doubles)");
         return n.to_double();
     }
@@ -327,9 +319,9 @@ private:
         }
         if (is_a<GiNaC::numeric>(e)) return constant(real_value(ex_to<GiNaC::numeric>(e), e), e);
         if (is_a<lst>(e) || is_a<matrix>(e))
-            throw type_error("cannot compile a list or matrix inside a scalar output: " + bounded(e));
+            throw type_error("cannot compile a list or matrix inside a scalar output: " + message_text(e));
         if (is_a<relational>(e))
-            throw type_error("cannot compile an equation or comparison: " + bounded(e));
+            throw type_error("cannot compile an equation or comparison: " + message_text(e));
         if (is_constant(e)) {
             // Subtrees without symbols are computed once, by GiNaC, at compile time.
             double c;
@@ -348,7 +340,7 @@ private:
         if (is_a<mul>(e)) return compile_mul(e);
         if (is_a<power>(e)) return compile_power(e);
         if (is_a<function>(e)) return compile_function(e);
-        throw type_error("cannot compile " + bounded(e) + " (not a number, input symbol, sum, product, "
+        throw type_error("cannot compile " + message_text(e) + " (not a number, input symbol, sum, product, "
                          "power or supported function)");
     }
 
@@ -499,7 +491,7 @@ private:
             return emit(f.op, node(e.op(0)), node(e.op(1)));
         }
         throw type_error("cannot evaluate numerically: unsupported function '" + name + "' in " +
-                         bounded(e) + " (supported: " + supported_functions() + ")");
+                         message_text(e) + " (supported: " + supported_functions() + ")");
     }
 };
 

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 #include "symrep/scalar/limit.h"
 
 namespace symrep::num {
@@ -40,14 +41,6 @@ GiNaC::numeric from_double(double x) {
 
 namespace {
 
-
-/// The printed expression, cut for a message.
-std::string bounded(const GiNaC::ex& e) {
-    std::ostringstream os;
-    os << e;
-    std::string s = os.str();
-    return s.size() > 120 ? s.substr(0, 117) + "..." : s;
-}
 
 /// Floating-point numbers inside an expression (e.g. 7.2921e-5 read from a
 /// script, a float of ~20 digits) replaced by the exact rationals they denote.
@@ -165,7 +158,7 @@ GiNaC::numeric evaluate_real(const GiNaC::ex& e, int digits) {
     const digits_scope scope(digits + reduction_digits(e));
     const GiNaC::ex v = exact_floats_of(e).evalf();
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
-        throw domain_error("reference: not a real number: " + bounded(v));
+        throw domain_error("reference: not a real number: " + message_text(v));
     return GiNaC::ex_to<GiNaC::numeric>(v);
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "symrep/core/error.h"
+#include "symrep/scalar/scalar.h"
 #include "symrep/numeric/reference.h"
 
 namespace symrep::num {
@@ -18,13 +19,6 @@ namespace {
 using GiNaC::ex;
 using GiNaC::numeric;
 using namespace GiNaC;
-
-std::string bounded(const ex& e) {
-    std::ostringstream os;
-    os << e;
-    std::string s = os.str();
-    return s.size() > 120 ? s.substr(0, 117) + "..." : s;
-}
 
 /// cos, sin, cosh, sinh written with exp (the exponents are then read off the product terms).
 struct exponential_form : GiNaC::map_function {
@@ -81,7 +75,7 @@ std::vector<term> terms_of(const std::vector<ex>& outputs, const ex& t) {
                     argument += f.op(1) * f.op(0).op(0);
                 } else {
                     throw type_error("spectral evaluator: output " + std::to_string(i + 1) +
-                                     " is not a quasi-polynomial in " + bounded(t) + ": the factor " + bounded(f));
+                                     " is not a quasi-polynomial in " + message_text(t) + ": the factor " + message_text(f));
                 }
             };
             if (GiNaC::is_a<GiNaC::mul>(product))
@@ -91,7 +85,7 @@ std::vector<term> terms_of(const std::vector<ex>& outputs, const ex& t) {
             argument = argument.expand();
             if (!argument.is_polynomial(t) || argument.degree(t) > 1)
                 throw type_error("spectral evaluator: output " + std::to_string(i + 1) + ": the exponent " +
-                                 bounded(argument) + " is not linear in " + bounded(t));
+                                 message_text(argument) + " is not linear in " + message_text(t));
             const ex rest = argument.coeff(t, 0);
             terms.push_back({i, m, rest.is_zero() ? coefficient : coefficient * GiNaC::exp(rest), argument.coeff(t, 1)});
         };
@@ -106,7 +100,7 @@ std::vector<term> terms_of(const std::vector<ex>& outputs, const ex& t) {
 numeric value_of(const ex& e, long digits, const char* what) {
     const ex v = evalf_reduced(e, digits);
     if (!GiNaC::is_a<numeric>(v))
-        throw type_error(std::string("spectral evaluator: the ") + what + " " + bounded(e) +
+        throw type_error(std::string("spectral evaluator: the ") + what + " " + message_text(e) +
                          " is not a number (a symbol other than t has no value)");
     return GiNaC::ex_to<numeric>(v);
 }
@@ -179,7 +173,7 @@ void check_conjugate_partner(const exponent_table& x, std::size_t j, std::size_t
         }
     }
     if (!ok)
-        throw domain_error("spectral evaluator: an output is not real (the exponent " + bounded(x.lambda[j]) +
+        throw domain_error("spectral evaluator: an output is not real (the exponent " + message_text(x.lambda[j]) +
                            " has no conjugate partner)");
 }
 

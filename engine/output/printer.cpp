@@ -444,6 +444,17 @@ bool involves_vectors(const ex& e) {
 }
 
 namespace {
+// A sum or product with a vector literal among its terms or factors (cos(t) [1, 1, 0] - sin(t) [0, 1, 0],
+// as a solver builds it): a vector expression, printed in the vector notation, not as matrix(...).
+bool holds_vector_literal(const ex& e) {
+    if (!is_a<GiNaC::add>(e) && !is_a<GiNaC::mul>(e)) return false;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (is_vector_literal(e.op(i)) || holds_vector_literal(e.op(i))) return true;
+    return false;
+}
+}  // namespace
+
+namespace {
 // Messages of the lower floors (scalar/scalar.h, message_text) print canonically too.
 const bool message_printer_registered = (set_message_printer(&print_ex), true);
 }  // namespace
@@ -510,6 +521,12 @@ std::string print_ex(const ex& e) {
                                       [](const ex& x) { return is_a<GiNaC::integral>(x); });
     if (!is_a<GiNaC::relational>(e) && (involves_vectors(e) || is_vector_literal(e) || integral))
         return symrep::to_string(e);
+    if (holds_vector_literal(e)) {
+        try {
+            return symrep::to_string(e);
+        } catch (const symrep::error&) {  // not a well-formed vector expression: printed as it is
+        }
+    }
     if (is_a<GiNaC::relational>(e) && (involves_vectors(e.op(0)) || involves_vectors(e.op(1))))
         return print_ex(e.op(0)) + " = " + print_ex(e.op(1));
     return pr(e).text;

@@ -253,4 +253,9 @@ bool is_nonzero_generic(const GiNaC::ex& x, const std::string& what) {
                        "give a wrong answer");
 }
 
+bool proved_zero(const GiNaC::ex& x) {
+    if (x.is_zero() || is_zero_scalar(x)) return true;
+    return decide_zero(x).is_zero == truth::yes;
+}
+
 }  // namespace symrep

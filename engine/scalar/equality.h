@@ -39,6 +39,10 @@ bool evaluate_numeric(const GiNaC::ex& x, long digits, GiNaC::numeric& out);
 /// (three-valued zero test) Decides whether x is identically 0.
 zero_decision decide_zero(const GiNaC::ex& x);
 
+/// True when x is proved identically 0 (the exact zero test, else decide_zero's yes); false
+/// means "not proved", never "nonzero".
+bool proved_zero(const GiNaC::ex& x);
+
 /// The point of a decision as text: "at x = 3/2, y = -1/3" ("" without symbols).
 std::string witness_text(const zero_decision& d);
 

@@ -273,11 +273,6 @@ GiNaC::ex lines_limit(std::size_t n, const near_point& near) {
     return limit_on_lines(n, near, 2);
 }
 
-bool proved_zero(const GiNaC::ex& x) {
-    if (x.is_zero() || is_zero_scalar(x)) return true;
-    return decide_zero(x).is_zero == truth::yes;
-}
-
 /// x at the point (every offset 0), or nothing where that divides by zero.
 std::optional<GiNaC::ex> at_point(const GiNaC::ex& x, const GiNaC::exmap& zero) {
     try {

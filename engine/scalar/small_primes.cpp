@@ -7,6 +7,11 @@
 
 namespace symrep {
 
+bool is_positive_rational(const GiNaC::ex& x) {
+    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
+           GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
+}
+
 namespace {
 
 constexpr long bound = 65536;
@@ -29,11 +34,6 @@ struct prime_blocks {
         }
     }
 };
-
-bool is_positive_rational(const GiNaC::ex& x) {
-    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
-           GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
-}
 
 bool is_rational_radical(const GiNaC::ex& y) {
     return GiNaC::is_a<GiNaC::power>(y) && is_positive_rational(y.op(0)) && GiNaC::is_a<GiNaC::numeric>(y.op(1)) &&

@@ -38,4 +38,8 @@ using cofactor_bases = std::map<GiNaC::numeric, std::vector<std::pair<GiNaC::num
 /// |B| = sqrt(B . B) next to q |B|/m).
 cofactor_bases refine_cofactors(const GiNaC::ex& e);
 
+/// True for a positive rational number (the bases whose radicals and logarithms are written
+/// over primes).
+bool is_positive_rational(const GiNaC::ex& x);
+
 }  // namespace symrep

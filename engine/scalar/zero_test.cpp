@@ -17,10 +17,6 @@ namespace symrep {
 
 namespace {
 
-bool is_positive_rational(const GiNaC::ex& x) {
-    return GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational() &&
-           GiNaC::ex_to<GiNaC::numeric>(x).is_positive();
-}
 
 }  // namespace
 

@@ -18,11 +18,8 @@ using GiNaC::ex;
 
 namespace {
 
-bool proved_zero(const ex& x) {
-    const ex y = tidy(GiNaC::expand(x));
-    if (is_zero_scalar(y)) return true;
-    return decide_zero(y).is_zero == truth::yes;
-}
+/// x proved 0 after expanding and tidying it (scalar/equality.h).
+bool proved_zero_tidy(const ex& x) { return proved_zero(tidy(GiNaC::expand(x))); }
 
 
 // F(s) = P(s) + R(s): P the polynomial part (impulses sum c_k dirac(t, k)), R proper.
@@ -131,7 +128,7 @@ algebra_inverse inverse_transform(const algebra_ptr& A, const coeffs& T, const c
             if (p == 0) {
                 f0 = fp;
                 g0 = gp;
-            } else if (!proved_zero(fp - f0) || !proved_zero(gp - g0)) {
+            } else if (!proved_zero_tidy(fp - f0) || !proved_zero_tidy(gp - g0)) {
                 throw domain_error("inverse_transform: the idempotent components 0 and " + std::to_string(p) +
                                    " give different signals (" + message_text(f0, text_limit::fragment) + " and " +
                                    message_text(fp, text_limit::fragment) + "): T is not a transform (V.2.39)");
@@ -173,14 +170,14 @@ algebra_inverse inverse_transform(const algebra_ptr& A, const coeffs& T, const c
     for (unsigned k = 1; k <= n; ++k) {
         const split_rational sk = split_polynomial_part(F[k], s, t);
         inv[k] = sk.proper.is_zero() ? ex(0) : inverse_laplace(sk.proper, s, t);
-        if (!proved_zero(inv[k] - GiNaC::pow(-t, k) * regular / GiNaC::factorial(k)))
+        if (!proved_zero_tidy(inv[k] - GiNaC::pow(-t, k) * regular / GiNaC::factorial(k)))
             throw domain_error("inverse_transform: the eps^" + std::to_string(k) + " coefficient of T is not " +
                                "L[(-t)^k f / k!] (V.3.40): T is not a transform over sobrero(" + std::to_string(n) + ")");
     }
     for (unsigned m = 1; m <= n; ++m) {
         ex c = 0;
         for (unsigned k = 0; k <= m; ++k) c += inv[k] * GiNaC::pow(t, m - k) / GiNaC::factorial(m - k);
-        if (!proved_zero(c))
+        if (!proved_zero_tidy(c))
             throw internal_error("inverse_transform: the eps^" + std::to_string(m) + " term of V.3.41 is not 0");
     }
     out.f = tidy(s0.impulses + regular);

@@ -124,7 +124,7 @@ void require_same_numerically(const rational& r, const ex& f, const GiNaC::symbo
         if (GiNaC::abs(v - want) > tol * std::max(GiNaC::numeric(1), GiNaC::abs(want)))
             fail("f^(" + std::to_string(k) + ")(0) is not " + message_text(c[std::size_t(k)], text_limit::report));
     }
-    for (const GiNaC::numeric t0 : {GiNaC::numeric(1, 3), GiNaC::numeric(1)}) {
+    for (const GiNaC::numeric& t0 : {GiNaC::numeric(1, 3), GiNaC::numeric(1)}) {
         GiNaC::numeric residual = 0, size = 1;
         for (int k = 0; k <= n; ++k) {
             GiNaC::numeric pk, dk;

@@ -42,11 +42,8 @@ void require_decaying(const ex& f, const GiNaC::symbol& t, const char* which) {
     }
 }
 
-bool proved_zero(const ex& x) {
-    const ex y = tidy(x);
-    if (is_zero_scalar(y)) return true;
-    return decide_zero(y).is_zero == truth::yes;
-}
+/// x proved 0 after tidying it (scalar/equality.h).
+bool proved_zero_tidy(const ex& x) { return proved_zero(tidy(x)); }
 
 }  // namespace
 
@@ -61,7 +58,7 @@ ex parseval_frequency_side(const ex& f, const ex& g, const GiNaC::symbol& t) {
     const auto exps = signals::exponents_of(f, t);
     ex product = 1;
     for (const auto& e : exps) product *= GiNaC::pow(s - e.lambda, e.multiplicity);
-    if (!proved_zero(product - den / lc))
+    if (!proved_zero_tidy(product - den / lc))
         throw internal_error("parseval: the denominator of L f is not the product over the exponents of f");
     const ex Gm = G.subs(s == -s);
     ex sum = 0;
@@ -86,7 +83,7 @@ parseval_result parseval(const algebra_ptr& A, const ex& f, const ex& g, const G
         all = all && ok;
         out.report += (out.report.empty() ? "" : "; ") + what + (ok ? ": proved" : ": not proved");
     };
-    note(proved_zero(out.time_side - out.frequency_side),
+    note(proved_zero_tidy(out.time_side - out.frequency_side),
          "int_0^oo f g dt = (1/2 pi) int F(i w) conj G(i w) dw (residues)");
     // the algebra side with d = sum_k omega_k i_k symbolic
     const unsigned n = M->order();
@@ -99,7 +96,7 @@ parseval_result parseval(const algebra_ptr& A, const ex& f, const ex& g, const G
     const coeffs Tf = transform(A, d, f, t).value, Tg = transform(A, d, g, t).value;
     const coeffs Tg_star = hypercomplex_conjugate(A, Tg), Tg_minus = transform(A, algebra::scale(-1, d), g, t).value;
     bool conj_ok = true;
-    for (std::size_t k = 0; k < Tg.size(); ++k) conj_ok = conj_ok && proved_zero(Tg_star[k] - Tg_minus[k]);
+    for (std::size_t k = 0; k < Tg.size(); ++k) conj_ok = conj_ok && proved_zero_tidy(Tg_star[k] - Tg_minus[k]);
     note(conj_ok, "(T g)^* = T g(-d)");
     const GiNaC::symbol s("s");
     const ex F = laplace(f, t, s), G = laplace(g, t, s);
@@ -108,7 +105,7 @@ parseval_result parseval(const algebra_ptr& A, const ex& f, const ex& g, const G
     const auto D = A->idempotent_components(d);
     bool comp_ok = true;
     for (std::size_t p = 0; p < Pf.size(); ++p)  // D[p] = i Omega_p
-        comp_ok = comp_ok && proved_zero(GiNaC::normal(Pf[p] * Pg[p] - F.subs(s == D[p]) * G.subs(s == -D[p])));
+        comp_ok = comp_ok && proved_zero_tidy(GiNaC::normal(Pf[p] * Pg[p] - F.subs(s == D[p]) * G.subs(s == -D[p])));
     note(comp_ok, "the components of T f (T g)^* are F(i Omega_p) conj G(i Omega_p)");
     out.element = algebra::scale(out.frequency_side, A->unit());
     out.proved = all ? truth::yes : truth::unknown;

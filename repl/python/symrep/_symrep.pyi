@@ -149,13 +149,13 @@ class Value:
     # --- the builtins of the language as methods: v.name(args) is name(v, args) ---
     def F(self, x: ValueLike, /) -> Value:
         """F(w, x)    [Vectors and mechanics]
-          The rotation operator F_w(x) = R x of the thesis, R' = W R, R(0) = I (W y = w x y): the solution of y' = w x y with y(0) = x, so that F(-w, psi) is Q psi of the reduction r = F_(-w)(psi). In closed form for a constant w (Rodrigues), a fixed direction w = s(t) u (angle a(t) = |u| int_0^t s, an integral object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed.
+          The rotation operator F_w(x) = R x of the thesis, R' = W R, R(0) = I (W y = w x y): the solution of y' = w x y with y(0) = x, so that F(-w, psi) is Q psi of the reduction r = F_(-w)(psi). In closed form for a constant w (Rodrigues), a fixed direction w = s(t) u (angle a(t) = |u| int_0^t s, an integral object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed. Dual arguments (docs/rigid_body.md section 2): a constant dual twist w = w0 + eps v gives exp(t W) x, the dual Rodrigues formula (R' = W R by transference); a real w acts on each part of a dual x.
           Thesis: (VI.2.9-12), (VI.3.118-119)
           Example: vector u, x
         F((1 + sin(t))*u, x)"""
     def F_adjoint(self, x: ValueLike, /) -> Value:
         """F_adjoint(w, x)    [Vectors and mechanics]
-          The transformation F*_w(x) = Q^T x of Thm VI.3.1.1 (VI.3.119), Q the tensor of F_(-w) (Q' = -W Q, Q(0) = I): the reduction psi = F*_w(r) of Thm VI.3.2.1. In closed form where Q is (a fixed direction: the rotation by the opposite angle, = F(w, x); a regular precession: (Q^T x)_i = (Q e_i) . x), proved Q (Q^T x) = x; x may depend on t. Refused for a turning w (Q numeric).
+          The transformation F*_w(x) = Q^T x of Thm VI.3.1.1 (VI.3.119), Q the tensor of F_(-w) (Q' = -W Q, Q(0) = I): the reduction psi = F*_w(r) of Thm VI.3.2.1. In closed form where Q is (a fixed direction: the rotation by the opposite angle, = F(w, x); a regular precession: (Q^T x)_i = (Q e_i) . x), proved Q (Q^T x) = x; x may depend on t. Refused for a turning w (Q numeric). A constant dual twist w0 + eps v: exp(t W) x, as F (docs/rigid_body.md section 2).
           Thesis: (VI.3.119), (Thm VI.3.1.1)
           Example: vector x
         F_adjoint([sin(t), cos(t), 1], x)"""
@@ -307,6 +307,43 @@ class Value:
           The Dirac impulse delta^(k)(x) (k = 0 by default) as a signal term: c(t)*dirac(alpha*t + beta, k) with alpha a nonzero number. diff(dirac(x, k), x) = dirac(x, k + 1); dirac(x) = 0 at a number x != 0. Its transform over any algebra is T delta^(k)(t - a) = d^k e^(-a d): T delta = 1 and T delta^(k) = d^k, the powers of the representation operator (V.2.32-35, V.3.33-36).
           Thesis: (V.2.32-35, V.3.33-36)
           Example: transform(dirac(t, 2), t, 2 + basis(sobrero(1), 1))"""
+    def dq_apply(self, x: ValueLike, /) -> Value:
+        """dq_apply(q, x)    [Screw motion and dual quaternions]
+          q x q* for a unit dual quaternion q (checked) and a dual vector x (a line): x + 2 s v x x + 2 v x (v x x), the same as the dual tensor of q.
+          Thesis: [CB14] action on lines
+          Example: dq_apply(dual_quaternion([0, 0, 1], [1, 0, 0], pi/2, 3), [1, 0, 0])"""
+    def dq_conjugate(self) -> Value:
+        """dq_conjugate(q)    [Screw motion and dual quaternions]
+          The conjugate [s, -v] of a dual quaternion: the inverse motion of a unit one.
+          Thesis: [CB14] dual quaternion conjugate
+          Example: dq_conjugate(dual_quaternion([0, 0, 1], [1, 0, 0], pi/2, 3))"""
+    def dq_motion(self) -> Value:
+        """dq_motion(q)    [Screw motion and dual quaternions]
+          The rigid motion [R, d] of a unit dual quaternion q = [s + eps s', v + eps v'] (checked): R x = (s^2 - v . v) x + 2 (v . x) v + 2 s v x x, d = 2 (s v' - s' v + v x v').
+          Thesis: [CB14] dual quaternion to (R, d)
+          Example: dq_motion(dual_quaternion([0, 0, 1], [1, 0, 0], pi/2, 3))"""
+    def dq_product(self, q2: ValueLike, /) -> Value:
+        """dq_product(q1, q2)    [Screw motion and dual quaternions]
+          The product q1 q2 of dual quaternions [s, v]: [s1 s2 - v1 . v2, s1 v2 + s2 v1 + v1 x v2] (dual): the motion q2, then q1.
+          Thesis: [CB14] dual quaternion product
+          Example: q := dual_quaternion([0, 0, 1], [1, 0, 0], pi/2, 3)
+        dq_product(q, q)"""
+    def dual(self, b: ValueLike, /) -> Value:
+        """dual(a, b)    [Dual numbers]
+          The dual number or dual vector a + eps*b (eps the dual unit, eps^2 = 0): a and b free of eps, both scalars or both vectors. The same as writing a + eps*b.
+          Thesis: [CB14] (dual numbers)
+          Example: dual(x, y)
+        dual([1, 0, 0], [0, 0, 1])"""
+    def dual_part(self) -> Value:
+        """dual_part(x)    [Dual numbers]
+          The dual part d of the dual quantity x = p + eps*d (the coefficient of eps after the reduction modulo eps^2, where f(a + eps*b) = f(a) + eps*b*f'(a)); 0 when x holds no eps.
+          Thesis: [CB14] (dual numbers)
+          Example: dual_part(sin(x + eps*y))"""
+    def dual_quaternion(self, p: ValueLike, a: ValueLike = ..., arg4: ValueLike = ..., /) -> Value:
+        """dual_quaternion(u, p, a, d) or dual_quaternion(R, d)    [Screw motion and dual quaternions]
+          The unit dual quaternion [s, v] (a dual scalar, a dual vector) of a screw, cos(A/2) + sin(A/2) U (U = u + eps p x u, A = a + eps d), or of a rigid motion (R, d): r + eps d r/2 with r = (cos(a/2), sin(a/2) u) from R, cos(a/2) >= 0. The two agree up to the sign of q, which both represent.
+          Thesis: [CB14] dual quaternions
+          Example: dual_quaternion([0, 0, 1], [1, 0, 0], pi/2, 3)"""
     def element(self, arg2: ValueLike, /) -> Value:
         """element(A, [c0, c1, ...])    [Algebras and elements]
           The element sum_k c_k eps_k of the algebra A, from its coordinates in the basis of A (one per basis element, dim(A) in all).
@@ -548,6 +585,19 @@ class Value:
           Whether F, an element whose coordinates are functions of the symbols of d (d affine in them), is monogenic in d: the generalized Cauchy-Riemann conditions b_r dF/dx = b_x dF/dr (b_x = dd/dx, r the first symbol with b_r invertible), e.g. i0 dF/domega_k = i_k dF/domega_0 over multicomplex(n) (V.2.21), j dF/dx = dF/dw over sobrero(n) (V.3.19). Each coordinate is proved 0 or shown nonzero at a point: [true/false, report]; an error when a condition is not decided.
           Thesis: Thm V.2.1 (V.2.18-21), Thm V.3.1 (V.3.19)
           Example: monogenic(transform(exp(-t), t, u*imag_unit(multicomplex(1), 0) + v*imag_unit(multicomplex(1), 1))[0], u*imag_unit(multicomplex(1), 0) + v*imag_unit(multicomplex(1), 1))"""
+    def motion_apply(self, d: ValueLike, x: ValueLike, /) -> Value:
+        """motion_apply(R, d, x)    [Screw motion and dual quaternions]
+          The rigid motion (R, d) applied to the dual vector x = x0 + eps m of a line: R x0 + eps (d x R x0 + R m) (the dual tensor (I + eps skew(d)) R); R is checked a rotation.
+          Thesis: [CB14] dual orthogonal tensor
+          Example: motion_apply([[0, -1, 0], [1, 0, 0], [0, 0, 1]], [1, 1, 3], [1, 0, 0])"""
+    def moving_frame(self, w: ValueLike, o: ValueLike = ..., /) -> Value:
+        """moving_frame(P, w, o)    [Vectors and mechanics]
+          The problem P, stated in an inertial frame (ode(x'' = ..., x(0) = X0, x'(0) = V0): gravity, a charge in E and B, Kepler about the origin ...), seen from a frame that turns with the angular velocity w(t) (its components in the frame) and whose origin moves along o(t) (a path in the inertial frame, which is the frame frozen at t = 0; o may be left out: 0). The result is the problem in the frame, m (r'' + 2 w x r' + w' x r + w x (w x r) + A) = R F, A = R o'' the origin's acceleration seen in the frame, r(0) = X0 - o(0), r'(0) = V0 - o'(0) - w(0) x r(0); solve gives r = R (psi - o), psi the inertial solution and R' = -W R: in closed form for a constant w, a fixed direction and a regular precession when psi is (a reduction object, evaluated by eval and verify, for Kepler). check(P, s) proves it, verify(P, s, values, T) integrates the frame's equation.
+          Thesis: [CS21] Thms 11-12; (VI.3.117, VI.3.132)
+          Example: vector g, x0, u0
+        P := moving_frame(ode(x'' = g, x(0) = x0, x'(0) = u0), [0, 0, 1], [t^2, 0, 0])
+        s := solve(P)
+        check(P, s)"""
     def multicomplex(self) -> Value:
         """multicomplex(n)    [Multicomplex algebra]
           The multicomplex algebra (x)C^{n+1} = C_0 (x) ... (x) C_n of order 2^{n+1}, with exact coefficients and the natural binary basis e_p = i0^{p_0} ... in^{p_n} (p_0 the most significant bit, so i0 = e_{2^n} and i_k = e_{2^{n-k}}). Exact for n <= 10; elements with float coordinates (1.5, not 3/2) are computed in double precision (products, inverse, exp, log, zero divisors; one fast Walsh-Hadamard transform), and for 10 < n <= the machine's limit (about 24) the algebra is double-precision only: numeric coordinates, results in floats.
@@ -606,11 +656,21 @@ class Value:
           The polynomial algebra P_n = R[X]/(p) for a monic polynomial p of degree n >= 1 (rational or symbolic coefficients; a float is read as the exact binary rational it denotes), with the cyclic basis 1, v, ..., v^(n-1) and p(v) = 0.
           Thesis: (II.1 completion of Thm II.1.2)
           Example: polynomial_algebra(X^3 - 2*X + 1, X)"""
+    def pose_dual_quaternion(self, d: ValueLike, /) -> Value:
+        """pose_dual_quaternion(R, d)    [Vectors and mechanics]
+          The unit dual quaternion q + eps (1/2) (0, d) q of the rigid motion (I + eps skew(d)) R (rotate by R, then translate by d), q the unit quaternion of R with w >= 0: returns [[w, x, y, z], [w', x', y', z']]. For the pose A, rho that relative_pose returns.
+          Thesis: [C23]
+          Example: pose_dual_quaternion([[0, -1, 0], [1, 0, 0], [0, 0, 1]], [1, 2, 3])"""
     def power_basis_change(self, d: ValueLike = ..., /) -> Value:
         """power_basis_change(A [, d])    [General and polynomial algebras]
           The matrix M with [d^0, ..., d^(n-1)]^T = M [e_1, ..., e_n]^T: row k holds the coordinates of d^k. It is the Wronskian of exp(d t) at t = 0 and is invertible iff d generates A. Without d, the generator of find_generator(A) is used.
           Thesis: (III.4.4)
           Example: power_basis_change(polynomial_algebra(X^2 + 1, X))"""
+    def primal(self) -> Value:
+        """primal(x)    [Dual numbers]
+          The primal part p of the dual quantity x = p + eps*d (x at eps = 0, after the reduction modulo eps^2); x itself when it holds no eps.
+          Thesis: [CB14] (dual numbers)
+          Example: primal(sin(x + eps*y))"""
     def print(self, *args: ValueLike) -> Value:
         """print(a, b, ...)    [Core]
           Prints its arguments on one line, separated by spaces (strings without quotes); returns nothing.
@@ -636,6 +696,11 @@ class Value:
           Exact relative orbital motion: a chaser seen from the LVLH frame (x radial, y along the track, z normal) of a target on a Keplerian orbit (R0, V0 inertial, gravitational parameter mu), starting at rho0 with relative velocity rho0' (LVLH components). The frame turns with w = |h|/|R|^2 about the orbit normal; undone as in Thm VI.3.2.1 the motion is the difference of two Kepler orbits (universal variables), any eccentricity, no linearization. Returns [rho, rho'] at T (a list of them for a list of times).
           Thesis: (VI.3.132-138)
           Example: relative_motion(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], t = 600)"""
+    def relative_pose(self, R0: ValueLike, V0: ValueLike, rho0: ValueLike, arg5: ValueLike, A0: ValueLike, wL: ValueLike, wD: ValueLike, t: ValueLike, /, *, leader_attitude: ValueLike = ...) -> Value:
+        """relative_pose(mu, R0, V0, rho0, rho0', A0, wL, wD, t = T [, leader_attitude = B])    [Vectors and mechanics]
+          Exact full-body relative orbital motion: the pose of a deputy rigid body in the body frame of a leader, both on Keplerian orbits (gravitational parameter mu; the leader's inertial state R0, V0 at t = 0). The leader's body axes at t = 0 are its LVLH axes (x radial, y along the track, z normal), turned by the rotation B when leader_attitude = B is given. rho0, rho0' the deputy's position and its rate in the leader's body components, A0 the deputy's axes in the leader's body components (a 3x3 rotation matrix or a unit quaternion [w, x, y, z]). wL, wD each body's angular velocity in its own body components, an expression in t: read as constant, fixed axis s(t) u, regular precession c u1 + R_u1(-c t) v (closed forms) or else integrated by Magnus on SO(3); or "orbital" (the body keeps its attitude in its own LVLH frame). The pose is Q_L (I + eps skew(psi)) A0 Q_D^T with psi the difference of the two inertial Kepler orbits (universal variables, 50 digits): no linearization, no Euler angles, no secular terms; with wL = "orbital" rho is relative_motion's. Returns [rho, rho', A, w_rel] at T (A the deputy's axes, w_rel = A w_D - w_L, A' = W_rel A; a list of them for a list of times) and reports which class each attitude motion was read as.
+          Thesis: [C23]; Thm VI.3.2.1 (VI.2.12, VI.3.117)
+          Example: relative_pose(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], [1, 0, 0, 0], [0, 0, 0.001], [0.01*cos(0.03*t), 0.01*sin(0.03*t), 0.05], t = 600)"""
     def represent(self, t: ValueLike, d: ValueLike = ..., /) -> Value:
         """represent(f, t [, d])    [Signals (II.2-II.3)]
           Psi(f): the element representing the signal f(t). Without d: f is a quasi-polynomial (sums and products of t^k, exp(a t), cos(b t), sin(b t), cosh, sinh; parameters real) and the element lives in the smallest polynomial algebra P_n = R[X]/(p) that holds it (p = annihilator(f, t, X)), with d = v. With d: on d's algebra, where f must solve q(D) f = 0 for q the minimal polynomial of d. Psi(f') = d Psi(f); Psi^-1(w) = lambda(w exp(d t)), lambda the last coordinate in the power basis of d (on a multicomplex algebra the coordinate of 1, IV.1.16 corrected; on a Sobrero algebra Re of the coordinate of eps^n, IV.1.2.17-18 corrected).
@@ -670,6 +735,11 @@ class Value:
         """rhs(a = b)    [Core]
           The right-hand side of a relation.
           Example: rhs(x + 1 = y)"""
+    def rigid_motion(self, p: ValueLike, a: ValueLike, d: ValueLike, /) -> Value:
+        """rigid_motion(u, p, a, d)    [Screw motion and dual quaternions]
+          The rigid motion of a screw as [R, d]: rotate by R, then translate by d (the dual tensor (I + eps skew(d)) R), R = exp(a skew(u)) by Rodrigues and d = (I - R) p + d u. u and p need components.
+          Thesis: [CB14] screw to (R, d)
+          Example: rigid_motion([0, 0, 1], [1, 0, 0], pi/2, 3)"""
     def rotation_operator(self, t: ValueLike, x: ValueLike, /) -> Value:
         """rotation_operator(w, t, x)    [Vectors and mechanics]
           exp(-K t) x with K = w x, derived by the algebra layer from the minimal polynomial X^3 + |w|^2 X of K (Hermite interpolation, Thm II.2.3): x - sin(|w| t)/|w| w x x + (1 - cos(|w| t))/|w|^2 w x (w x x), the solution of x' + w x x = 0 (Rodrigues).
@@ -690,6 +760,16 @@ class Value:
           Sampling with step h of the signals represented with the operator d (an element of the algebra; for a polynomial algebra its generator v): [exp(h d), q(l), report]. The samples f(k h) of the signal Psi^-1(w) are the discrete signal of the same w with the shift exp(h d); q(l) = det(l I - exp(h [d])) is their characteristic polynomial. The report says whether the samples alias (two roots r, s of p with e^(h r) = e^(h s): they then span fewer dimensions than q's degree). q comes from the roots of p's rational factors (degree <= 3, Cardano for 3); with a factor of higher degree and numbers for p and h, exp(h d) and q are numeric (30 digits), marked as such in the report with a bound on q's coefficients.
           Thesis: Thm II.3.4, Cor. II.3.5 (II.3.26-32)
           Example: sampling(find_generator(polynomial_algebra(X^2 + pi^2, X)), 1, l)"""
+    def screw(self, p: ValueLike, a: ValueLike, d: ValueLike, x: ValueLike, /) -> Value:
+        """screw(u, p, a, d, x)    [Screw motion and dual quaternions]
+          The screw motion about the axis through p along u (any nonzero direction, normalized), by the angle a about it and the translation d along it (pitch d/a), applied to the dual vector x = x0 + eps m (a line: direction x0, moment m = q x x0 for a point q on it; a real x is a line through the origin): the dual Rodrigues formula Q x = cos(A) x + sin(A) U x x + (1 - cos(A)) (U . x) U with the dual axis U = u + eps p x u and the dual angle A = a + eps d, i.e. Q = exp(A U x), reduced modulo eps^2.
+          Thesis: [CB14] dual Rodrigues formula; (VI.1.13-15) by transference
+          Example: screw([0, 0, 1], [1, 0, 0], pi/2, 3, [1, 0, 0])"""
+    def screw_parameters(self, d: ValueLike, /) -> Value:
+        """screw_parameters(R, d)    [Screw motion and dual quaternions]
+          The screw [u, p, a, d] of the rigid motion (R, d): cos a = (tr R - 1)/2 and sin a u = vee(R - R^T)/2 with a in [0, pi], p = (w + cot(a/2) u x w)/2 the point of the axis nearest the origin (w = d - (u . d) u), d = u . d. a = 0 is a pure translation (u = d/|d|, p = 0); a = pi takes u from (R + I)/2 = u u^T. Refused: R not a rotation (R^T R = I and det R = 1 proved; float entries to 1e-12), the identity (no axis), and an angle that cannot be decided 0, pi or neither.
+          Thesis: [CB14] (R, d) to screw
+          Example: screw_parameters([[0, -1, 0], [1, 0, 0], [0, 0, 1]], [1, 1, 3])"""
     def semiexponential(self) -> Value:
         """semiexponential(w)    [Algebras and elements]
           The semiexponential form, as the list [rho, theta] of elements. Multicomplex: w = rho exp(theta), rho = sum r_p e_p (the moduli of the idempotent components) and theta = sum i0 phi_p e_p (their arguments). Sobrero: w = sum_k A_k exp(j phi_k) eps^k, coordinate by coordinate, rho = sum A_k eps^k with A_k = sqrt(a_k^2 + b_k^2) and theta = sum j phi_k eps^k with phi_k = atan2(b_k, a_k) in [0, 2 pi) (there w is not rho exp(theta)).
@@ -846,6 +926,11 @@ class Value:
         """tschauner_hempel(mu, R0, V0, rho0, rho0', t = T)    [Vectors and mechanics]
           The linear model of the relative motion about an elliptic target orbit (Tschauner-Hempel): the LVLH equation linearized in rho, rho'' + 2 w x rho' + w' x rho + w x (w x rho) + (mu/|R|^3)(rho - 3 (rho . x) x) = 0, integrated with the target's orbit (Boost.Odeint rkf78 at 1e-13). Arguments and result as for relative_motion.
           Example: tschauner_hempel(398600.4418, [7000, 0, 0], [0, 8.5, 1.2], [0.1, 0, 0], [0, 0, 0], t = 600)"""
+    def twist_exp(self, x: ValueLike, /) -> Value:
+        """twist_exp(w, x)    [Screw motion and dual quaternions]
+          exp(W) x for a dual vector w = w0 + eps v (a twist times a time; W y = w x y the dual skew tensor) and a dual vector x: x + sin|w|/|w| w x x + (1 - cos|w|)/|w|^2 w x (w x x) with the dual norm |w|; for w0 = 0 (a pure translation) x + eps v x x. The screw (u, p, a, d) is the twist w = a u + eps (a p x u + d u).
+          Thesis: [CB14] exponential of a dual skew tensor
+          Example: twist_exp([0, 0, 1], [0, 1, 0])"""
     def two_body(self, REL: ValueLike, m1: ValueLike, m2: ValueLike, /) -> Value:
         """two_body(CM, REL, m1, m2)    [Vectors and mechanics]
           The two-body problem in a frame rotating with w(t) (VI.3.4.2): CM the centre of mass's free problem (R'' + 2 w x R' + w' x R + w x (w x R) = 0), REL the relative one (r = x2 - x1, the same w, a central field f(|r|) r/|r| per unit mass), m1, m2 the masses. The coupled equations are checked to give CM and REL back. Returns [statement, value] pairs in the vector symbols x1, x2 (positions), v1, v2 (velocities; declared vectors by the call): P, K0, E_cin, I0 w, V_c, V (VI.3.253-260); H, L0, T with H = P + M w x r_c, L0 = K0 + I0 w, T = E_cin + V_c (VI.3.237-258), H' + w x H = 0, L0' + w x L0 = 0, T + V constant; H(t) = F_(-w)(H0), L0(t) = F_(-w)(L0^0) from CM's and REL's initial values (closed for a fixed direction: VI.3.267-268); the generalized potentials (VI.3.264-266); the centre-of-mass frame H^c = 0, L_c, L_c(t), T^c, and E_cin^c + V constant with its fixed-direction form and Jacobi's integral (VI.3.273-291). Every statement is proved (identities by the zero test; constants by the derivative along the coupled equations).
