@@ -297,6 +297,31 @@ TEST(EqualityIssue13, VectorsAgainstListsAndDotsOfLiteralsAreDecided) {
     EXPECT_TRUE(s.evaluate("e == [0, 0, 0]").as_bool());
 }
 
+// A solution for literal data is a sum of literals (-sin(a)*[0, 1, 0] + cos(a)*[1, 0, 0]); F
+// gives the same vector as one literal. == compared the two as trees and answered false (a
+// wrong answer), and F - solve was "cannot combine a matrix". Now both are one literal first.
+TEST(EqualityIssue13, ASumOfLiteralsIsTheLiteralItAddsUpTo) {
+    std::ostringstream out, err;
+    session s(out, err);
+    ASSERT_EQ(s.run_string("a := F(t*[0, 0, 1], [1, 0, 0])\n"
+                           "b := solve(ode(x' - t*[0, 0, 1] x x = 0, x(0) = [1, 0, 0]))\n"
+                           "c := F(t*([0, 0, 1] + eps*[1, 0, 0]), [1, 0, 0] + eps*[0, 1, 0])\n"
+                           "d := solve(ode(x' - t*([0, 0, 1] + eps*[1, 0, 0]) x x = 0, x(0) = [1, 0, 0] + "
+                           "eps*[0, 1, 0]))\n",
+                           "t"),
+              0)
+        << err.str();
+    EXPECT_FALSE(s.evaluate("a == [cos(t^2/2), sin(t^2/2), 1]").as_bool());
+    EXPECT_TRUE(s.evaluate("a == b").as_bool());
+    EXPECT_TRUE(s.evaluate("b == a").as_bool());
+    EXPECT_TRUE(s.evaluate("[cos(t^2/2), sin(t^2/2), 0] == b").as_bool());
+    EXPECT_FALSE(s.evaluate("b == [cos(t^2/2), -sin(t^2/2), 0]").as_bool());
+    EXPECT_TRUE(s.evaluate("simplify(a - b) == [0, 0, 0]").as_bool());
+    EXPECT_TRUE(s.evaluate("simplify(b + [1, 0, 0] - a) == [1, 0, 0]").as_bool());
+    EXPECT_TRUE(s.evaluate("c == d").as_bool());  // dual: part by part
+    EXPECT_FALSE(s.evaluate("c == d + eps*[0, 0, 1]").as_bool());
+}
+
 namespace {
 
 /// The echo of one statement (what the symrep program prints for it), or "error: MESSAGE".

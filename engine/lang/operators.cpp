@@ -300,7 +300,37 @@ equality decide_vectors(const ex& x, const ex& y) {
 
 }  // namespace
 
-equality compare_values(const value& a, const value& b) {
+namespace {
+
+// A sum or product of vector literals without vector symbols (what solve gives for literal data,
+// -sin(a)*[0, 1, 0] + cos(a)*[1, 0, 0]) as the one literal it is; nothing for anything else. A
+// literal and such a sum were compared as trees (a wrong false) and could not be subtracted.
+std::optional<ex> literal_sum(const ex& e) {
+    if (is_a<GiNaC::matrix>(e) || is_a<GiNaC::relational>(e) || !has_matrix(e) || !vector_symbols(e).empty())
+        return std::nullopt;
+    for (std::size_t i = 0; i < e.nops(); ++i)  // only vector literals inside (no 2x2 matrices)
+        if (is_a<GiNaC::matrix>(e.op(i)) && !is_vector_literal(e.op(i))) return std::nullopt;
+    try {
+        const ex r = subs_components(e, {});
+        if (is_vector_literal(r)) return r;
+    } catch (const error&) {
+    }
+    return std::nullopt;
+}
+
+value as_one_literal(const value& v) {
+    if (!v.is_ex()) return v;
+    if (const auto r = literal_sum(v.as_ex())) return value(*r);
+    return v;
+}
+
+}  // namespace
+
+equality compare_values(const value& a0, const value& b0) {
+    // both sides as literals where one of them is a vector by its components
+    const bool literal = (a0.is_ex() && (literal_sum(a0.as_ex()) || is_vector_literal(a0.as_ex()))) ||
+                         (b0.is_ex() && (literal_sum(b0.as_ex()) || is_vector_literal(b0.as_ex())));
+    const value a = literal ? as_one_literal(a0) : a0, b = literal ? as_one_literal(b0) : b0;
     if (a.is_ex() && b.is_ex() && (dual::has_dual_unit(a.as_ex()) || dual::has_dual_unit(b.as_ex())) &&
         !is_a<GiNaC::relational>(a.as_ex()) && !is_a<GiNaC::relational>(b.as_ex()) && !has_matrix(a.as_ex()) &&
         !has_matrix(b.as_ex())) {
@@ -439,8 +469,10 @@ value plain_binary_op(const std::string& op, const value& a, const value& b) {
         const ex u = vector_operand(op, a, "left"), v = vector_operand(op, b, "right");
         return op == "x" ? cross(u, v) : dot(u, v);
     }
-    if ((op == "+" || op == "-" || op == "=") && (((is_vector_ex(a) || is_column3(a)) && is_triple(b)) ||
-                                                  (is_triple(a) && (is_vector_ex(b) || is_column3(b)))))
+    const auto vector_like = [](const value& v) {
+        return is_vector_ex(v) || is_column3(v) || (v.is_ex() && literal_sum(v.as_ex()));
+    };
+    if ((op == "+" || op == "-" || op == "=") && ((vector_like(a) && is_triple(b)) || (is_triple(a) && vector_like(b))))
         return binary_op(op, a.is_list() ? value(as_literal(a)) : a, b.is_list() ? value(as_literal(b)) : b);
     if (op == "=" && a.is_ex() && is_triple(b))
         return ex(GiNaC::relational(a.as_ex(), as_literal(b), GiNaC::relational::equal));
@@ -483,6 +515,13 @@ value plain_binary_op(const std::string& op, const value& a, const value& b) {
         const ex r = op == "+" ? a.as_ex() + b.as_ex() : a.as_ex() - b.as_ex();
         (void)is_vector(r);  // [1, 2] + w: type_error
         return r;
+    }
+    if (a.is_ex() && b.is_ex() && (op == "+" || op == "-") &&
+        (is_a<GiNaC::matrix>(a.as_ex()) != is_a<GiNaC::matrix>(b.as_ex()))) {
+        // a literal and a sum of literals (a solution for literal data): one literal each
+        const value x = as_one_literal(a), y = as_one_literal(b);
+        if (is_a<GiNaC::matrix>(x.as_ex()) && is_a<GiNaC::matrix>(y.as_ex()))
+            return ex_binary(op, x.as_ex(), y.as_ex());
     }
     if (a.is_ex() && b.is_ex()) {
         ex r = ex_binary(op, a.as_ex(), b.as_ex());
