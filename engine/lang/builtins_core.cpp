@@ -561,7 +561,10 @@ void register_core_builtins(registry& r) {
          "only the scalar problems needed are solved; prints the model, the method and why (lines "
          "'solve: ...'), and returns the solution with the values put in, equal to solve(P) with them. "
          "A rotating-frame problem whose w(t) turns, or with a nonlinear central field (VI.3), gives the "
-         "reduction r = F_(-w)(psi) = Q psi (Thm VI.3.2.1) as an object, evaluated by eval and verify.",
+         "reduction r = F_(-w)(psi) = Q psi (Thm VI.3.2.1) as an object, evaluated by eval and verify. The dual "
+         "Poisson-Darboux problem m (x' + Omega x x) = 0 (Omega = w + eps v, docs/rigid_body.md section 3) is "
+         "closed for a constant twist, a fixed screw axis and a regular screw precession; any other twist gives "
+         "x = Q^ x(0) with Q^ numeric (Magnus on SE(3)) as an object, evaluated by eval and verify.",
          "(VI.1.13-15), (VI.1.26-38), (VI.1.81), (II.1.23-24)", "solve([x + y = 3, x - y = 1], [x, y])",
          1, 2, builtin_solve},
         {"evalf", "evalf(e [, digits])",

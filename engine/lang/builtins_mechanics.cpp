@@ -15,11 +15,13 @@
 #include <tuple>
 
 #include "symrep/scalar/scalar.h"
+#include "symrep/dual/dual.h"
 #include "symrep/lang/builtins.h"
 #include "symrep/lang/builtins_frames.h"
 #include "symrep/output/printer.h"
 #include "symrep/lang/values.h"
 #include "symrep/lang/verify_dual.h"
+#include "symrep/mechanics/dual_darboux.h"
 #include "symrep/mechanics/cauchy_problem.h"
 #include "symrep/mechanics/rotation_operator_algebra.h"
 #include "symrep/mechanics/scene.h"
@@ -104,12 +106,27 @@ std::string precision_note(const num::verify_result& v) {
 
 }  // namespace
 
+namespace {
+
+// The dual Poisson-Darboux problem with a twist that has no closed form (dual_darboux.h).
+bool numeric_dual(const mechanics::cauchy_problem& P) {
+    return P.dual_darboux && P.dual_darboux->twist.form == mechanics::dual_twist_form::kind::general;
+}
+
+bool is_dual_reduction(const reduction& r) { return bool(r.solution->problem->dual_darboux); }
+
+}  // namespace
+
 value solve_problem(const value& p) {
     if (const auto F = mechanics::moving_frame_of(p.as_problem()); F && F->rotating && mechanics::inertial_is_numeric(*F))
         // ([CS21] Thm 12) r = Q (psi - o), psi numeric (Kepler): the VI.3 object of y = Q psi, whose
         // problem carries the origin o (moving_frame_origin)
         return value(reduction{std::make_shared<const mechanics::reduced_solution>(
             mechanics::reduced_solution{F->rotating, {}})});
+    if (numeric_dual(p.as_problem()))
+        // (issue 31 item 3) a twist without a closed form: x^ = Q^ x^0, Q^ by Magnus on SE(3)
+        return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+            mechanics::reduced_solution{p.problem_pointer(), {}})});
     if (p.as_problem().turning && !mechanics::closed_solution(p.as_problem(), *p.as_problem().turning))
         // (Thm VI.3.2.1) r = F_(-w)(psi): Q or psi has no closed form
         return value(reduction{std::make_shared<const mechanics::reduced_solution>(
@@ -133,9 +150,9 @@ data_values reduction_values(const reduction& r, data_values d) {
     return exact_values(std::move(d));
 }
 
-// r (or r') of a solution by reduction at each time, in the given order.
-std::vector<Eigen::Vector3d> reduction_at(const reduction& r, const data_values& d, const std::vector<double>& times,
-                                          const builtin& b) {
+// The times in increasing order (order[k] the place of the k-th) for a solution by reduction.
+std::pair<std::vector<std::size_t>, std::vector<double>> sorted_times(const std::vector<double>& times,
+                                                                      const builtin& b) {
     std::vector<std::size_t> order(times.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return times[i] < times[j]; });
@@ -146,11 +163,37 @@ std::vector<Eigen::Vector3d> reduction_at(const reduction& r, const data_values&
                              std::to_string(times[i]));
         sorted.push_back(times[i]);
     }
+    return {order, sorted};
+}
+
+// r (or r') of a solution by reduction at each time, in the given order.
+std::vector<Eigen::Vector3d> reduction_at(const reduction& r, const data_values& d, const std::vector<double>& times,
+                                          const builtin& b) {
+    const auto [order, sorted] = sorted_times(times, b);
     const auto put = [&](const ex& e) { return put_values_limit(e, d); };
     const auto states = mechanics::evaluate(*r.solution, put, sorted);
     std::vector<Eigen::Vector3d> out(times.size());
     for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = r.derivative ? states[k].v : states[k].r;
     return out;
+}
+
+// x^ (or x^') of a numeric dual solution at each time, in the given order.
+std::vector<num::twist> dual_reduction_at(const reduction& r, const data_values& d, const std::vector<double>& times,
+                                          const builtin& b) {
+    const auto [order, sorted] = sorted_times(times, b);
+    const auto put = [&](const ex& e) { return put_values_limit(e, d); };
+    const auto states = mechanics::dual_darboux_states(*r.solution->problem, put, sorted, r.derivative != 0);
+    std::vector<num::twist> out(times.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[order[k]] = states[k];
+    return out;
+}
+
+// [x1 + eps y1, x2 + eps y2, x3 + eps y3]
+value dual_triple_value(const num::twist& x) {
+    list out;
+    for (int i = 0; i < 3; ++i)
+        out.push_back(value(ex(num::from_double(x.w[i]) + dual::dual_unit() * num::from_double(x.v[i]))));
+    return value(out);
 }
 
 value triple_value(const Eigen::Vector3d& x) {
@@ -217,6 +260,12 @@ mechanics::parameter_values scene_values(const args_t& a, std::size_t i, const b
 
 value solve_scene(const builtin& b, const args_t& a, context& c) {
     const auto& P = problem_arg(a, 0, b);
+    if (numeric_dual(P)) {  // (issue 31 item 3) the values bound, put in when it is evaluated
+        c.out() << b.name << ": method: x = Q^ x(0) with Q^' = -Omega Q^, Q^(0) = I; the twist has no closed form: "
+                << "Q^ numeric (Magnus on SE(3))\n";
+        return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+            mechanics::reduced_solution{a[0].problem_pointer(), scene_values(a, 1, b)})});
+    }
     if (P.turning && !mechanics::closed_solution(P, *P.turning)) {
         // the reduction with the values bound (they are put in when it is evaluated)
         mechanics::reduced_solution s{a[0].problem_pointer(), scene_values(a, 1, b)};
@@ -255,6 +304,17 @@ value verify_reduction(const builtin& b, const args_t& a, context& c) {
     if (r.derivative) throw type_error(b.name + ": argument 2 must be the solution, not its derivative");
     const data_values d = reduction_values(r, read_values(a[2], b, 2));
     const auto [T, n, opt] = verify_arguments(a, b);
+    if (is_dual_reduction(r)) {  // x^ = Q^ x^0 (Magnus on SE(3)) against P as six real equations
+        if (!P.dual_darboux) throw type_error(b.name + ": the solution is of a dual problem, P is not");
+        const auto put = [&](const ex& e) { return put_values_limit(e, d); };
+        const mechanics::cauchy_problem& S = *r.solution->problem;
+        const num::sampled_function cf = [&](const std::vector<double>& times, double* out) {
+            const auto x = mechanics::dual_darboux_states(S, put, times);
+            for (std::size_t k = 0; k < times.size(); ++k)
+                for (int i = 0; i < 3; ++i) out[6 * k + i] = x[k].w[i], out[6 * k + 3 + i] = x[k].v[i];
+        };
+        return verify_dual(P, cf, d, T, std::size_t(n), opt, b, c);
+    }
     const auto t0 = std::chrono::steady_clock::now();
     data_values dp = d;
     dp.scalars.erase(P.t);
@@ -395,6 +455,10 @@ value builtin_first_integrals(const builtin& b, const args_t& a, context&) {
 value builtin_check(const builtin& b, const args_t& a, context& c) {
     const auto& P0 = problem_arg(a, 0, b);
     if (a[1].is_reduction() && mechanics::moving_frame_of(P0) && a.size() == 2) return check_moving_frame(b, P0, c);
+    if (a[1].is_reduction() && is_dual_reduction(a[1].as_reduction()))
+        throw domain_error(b.name + ": the solution of " + P0.name + " is numeric (Q^ by Magnus on SE(3): the "
+                           "twist has no closed form), nothing exact to substitute: compare it with the "
+                           "equation numerically, verify(P, s, values, T)");
     if (a[1].is_reduction())
         throw domain_error(b.name + ": the solution is the reduction " + P0.name +
                            " = F_(-w)(psi) (Thm VI.3.2.1, proved once for all w in the tests), not a closed "
@@ -465,8 +529,16 @@ value builtin_eval(const builtin& b, const args_t& a, context&) {
         const ex T = tr.rhs();
         for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
             times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
+        const bool one = !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T);
+        if (is_dual_reduction(red)) {  // x^ = Q^ x^0 (or x^'), Q^ by Magnus on SE(3)
+            const auto x = dual_reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
+            if (x.size() == 1 && one) return dual_triple_value(x[0]);
+            list out;
+            for (const auto& v : x) out.push_back(dual_triple_value(v));
+            return value(out);
+        }
         const auto x = reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
-        if (x.size() == 1 && !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T)) return triple_value(x[0]);
+        if (x.size() == 1 && one) return triple_value(x[0]);
         list out;
         for (const auto& v : x) out.push_back(triple_value(v));
         return value(out);
@@ -791,7 +863,10 @@ void register_mechanics_builtins(registry& r) {
          "object when int s is not elementary) and a regular precession; for a turning w (x constant) a solution "
          "by reduction, evaluated by eval with R numeric (Magnus on SO(3)). x may depend on t where R is closed. "
          "Dual arguments (docs/rigid_body.md section 2): a constant dual twist w = w0 + eps v gives exp(t W) x, the "
-         "dual Rodrigues formula (R' = W R by transference); a real w acts on each part of a dual x.",
+         "dual Rodrigues formula (R' = W R by transference); a dual twist w(t) that turns gives the solution of the "
+         "dual Poisson-Darboux problem y' = w x y, y(0) = x (x constant): closed for a fixed screw axis s(t) u^ and a "
+         "regular screw precession, otherwise numeric (Magnus on SE(3)), evaluated by eval; a real w acts on each "
+         "part of a dual x.",
          "(VI.2.9-12), (VI.3.118-119)", "vector u, x\nF((1 + sin(t))*u, x)", 2, 2, builtin_F},
         {"vector_series", "vector_series(e, w, n)",
          "The expansion of e in powers of the vector w up to total degree n (w -> eps w, a series in eps, "

@@ -11,6 +11,8 @@
 #include "symrep/dual/dual_quaternion.h"
 #include "symrep/dual/screw.h"
 #include "symrep/lang/builtins.h"
+#include "symrep/mechanics/dual_darboux.h"
+#include "symrep/mechanics/turning_frame.h"
 #include "symrep/output/printer.h"
 #include "symrep/vector/vector.h"
 
@@ -213,11 +215,20 @@ value dual_rotation_operator(const builtin& b, const args_t& a, context& c, cons
     }
     // (VI.1.13-15) by transference: R' = W^ R, R(0) = I gives R = exp(t W^) for a constant twist
     const ex dw = diff_t(w, t);  // (a literal's derivative is a matrix of zeros)
-    if (w.has(t) || !(dw.is_zero() || equal(dw, 0)))
-        throw closed_form_error(b.name + ": the dual w^ = " + print_ex(w) +
-                                " depends on t: F over a dual twist is in closed form here for a constant "
-                                "twist w + eps v only (exp(t W^), the dual Rodrigues formula)");
-    return value(named(b, [&] { return dual::exp_dual_skew(w, x, t); }));
+    if (!w.has(t) && (dw.is_zero() || equal(dw, 0)))
+        return value(named(b, [&] { return dual::exp_dual_skew(w, x, t); }));
+    // a dual twist w(t): y = F_w(x) solves y' = w x y, y(0) = x, the dual Poisson-Darboux problem
+    // with Omega^ = -w: closed for a fixed screw axis and a regular screw precession
+    // (mechanics/dual_darboux.h), else numeric (Magnus on SE(3)), evaluated by eval
+    if (mechanics::depends_on_time(x, t))
+        throw closed_form_error(b.name + ": x = " + print_ex(x) + " depends on t: over a turning dual twist w(t) "
+                                "F(w, x) takes a constant x");
+    const auto P = named(b, [&] { return mechanics::dual_rotation_problem(w, x, t); });
+    if (const auto y = mechanics::dual_darboux_motion(P->dual_darboux->twist, P->dual_darboux->x0, t))
+        // one literal [a + eps b, ...] where the data have components (as F of a real w prints)
+        return value(vector_symbols(*y).empty() ? dual::reduce(subs_components(*y, {})) : *y);
+    return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+        mechanics::reduced_solution{P, {}, true})});
 }
 
 void register_screw_builtins(registry& r) {

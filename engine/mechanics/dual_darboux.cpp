@@ -2,6 +2,8 @@
 // twist and the closed forms by transference of the real ones (dual_darboux.h).
 #include "symrep/mechanics/dual_darboux.h"
 
+#include <algorithm>
+#include <memory>
 #include <vector>
 
 #include "symrep/core/error.h"
@@ -9,7 +11,9 @@
 #include "symrep/mechanics/fixed_axis.h"
 #include "symrep/mechanics/residual_proof.h"
 #include "symrep/mechanics/turning_frame.h"
+#include "symrep/numeric/evaluator.h"
 #include "symrep/numeric/quadrature.h"
+#include "symrep/numeric/reference.h"
 #include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
@@ -275,6 +279,82 @@ std::pair<cauchy_problem, cauchy_problem> dual_darboux_parts(const cauchy_proble
     B.expression = P.unknowns[1] + cross(om.primal, x) + cross(om.dual, dual::primal(s));
     B.initial = {x0.dual};
     return {A, B};
+}
+
+namespace {
+
+// A real vector expression (values put in) as one literal [x, y, z] of functions of t.
+ex numeric_literal(const ex& e, const std::string& what) {
+    if (e.is_zero() || equal(e, 0)) return vector_literal(0, 0, 0);
+    ex v;
+    try {
+        v = GiNaC::is_a<GiNaC::matrix>(e) ? e : subs_components(e, {});
+    } catch (const type_error&) {
+        throw type_error(what + " is not a vector of numbers: " + to_string(e) + " (give every vector a value)");
+    }
+    if (!is_vector_literal(v)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
+    return v;
+}
+
+Eigen::Vector3d numbers(const ex& e, const std::string& what) {
+    const ex v = numeric_literal(e, what);
+    Eigen::Vector3d out;
+    for (int i = 0; i < 3; ++i) {
+        try {
+            out[i] = num::accurate_double(v.op(unsigned(i)));
+        } catch (const domain_error&) {
+            throw type_error(what + " does not evaluate to real numbers: " + to_string(GiNaC::evalf(v)) +
+                             " (give every symbol a value)");
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<num::twist> dual_darboux_states(const cauchy_problem& P, const value_map& put,
+                                            const std::vector<double>& times, bool derivative) {
+    if (!P.dual_darboux) throw error("dual_darboux_states: internal: not a dual Poisson-Darboux problem");
+    const dual_darboux_form& F = *P.dual_darboux;
+    const dual::dual_parts om = dual::parts(dual::reduce(put(F.twist.omega)));
+    const dual::dual_parts x0 = dual::parts(dual::reduce(put(F.x0)));
+    const ex w = numeric_literal(om.primal, "the twist's primal part w(t)");
+    const ex v = numeric_literal(om.dual, "the twist's dual part v(t)");
+    auto fw = std::make_shared<num::compiled_function>(num::compile(w, {P.t}));
+    auto fv = std::make_shared<num::compiled_function>(num::compile(v, {P.t}));
+    const num::twist_function xi = [fw, fv](double x) { return num::twist{fw->eval3(&x), fv->eval3(&x)}; };
+    const num::twist a{numbers(x0.primal, P.name + "(0)"), numbers(x0.dual, "the dual part of " + P.name + "(0)")};
+    num::se3_tensor_options o;
+    o.max_steps = 5'000'000;  // about 10 s of work: t = 1e12 is refused with a reason, not run for hours
+    for (std::size_t k = 0; k < times.size(); ++k)
+        if (!(times[k] >= 0) || !std::isfinite(times[k]) || (k && times[k] < times[k - 1]))
+            throw type_error("the dual problem is evaluated at sorted finite times t >= 0");
+    const num::se3_tensor_result Q = num::se3_tensor(xi, times, o);
+    std::vector<num::twist> out;
+    out.reserve(times.size());
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const num::twist x = num::apply(Q.Q[k], a);  // x^ = Q^ x^0
+        out.push_back(derivative ? -num::twist_cross(xi(times[k]), x) : x);  // x^' = -Omega^ x x^
+    }
+    return out;
+}
+
+std::shared_ptr<const cauchy_problem> dual_rotation_problem(const ex& w, const ex& x0, const ex& t) {
+    // y' = w x y, i.e. y' + Omega^ x y = 0 with Omega^ = -w, y(0) = x0 (as rotation_problem)
+    auto P = std::make_shared<cauchy_problem>();
+    P->name = "y";
+    P->t = t;
+    P->is_vector = true;
+    const ex y = GiNaC::realsymbol("y");
+    register_vector_function(y, t);
+    P->unknowns = {y, derivative(y)};
+    P->initial = {x0};
+    P->expression = P->unknowns[1] - cross(w, y);
+    std::string why;
+    auto F = read_dual_darboux(*P, &why);
+    if (!F) throw domain_error("F_w(x): " + (why.empty() ? "the dual w(t) = " + to_string(w) + " is not read" : why));
+    P->dual_darboux = std::make_shared<const dual_darboux_form>(std::move(*F));
+    return P;
 }
 
 }  // namespace symrep::mechanics

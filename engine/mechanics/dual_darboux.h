@@ -34,6 +34,8 @@
 #include <ginac/ginac.h>
 
 #include "symrep/mechanics/cauchy_problem.h"
+#include "symrep/mechanics/reduced_solution.h"
+#include "symrep/numeric/se3.h"
 
 namespace symrep::mechanics {
 
@@ -88,5 +90,20 @@ GiNaC::ex solve_dual_darboux(const cauchy_problem& P, const dual_darboux_form& F
 /// dual y' + w x y + v x x_s(t) = 0, y(0) = y0, with x_s the primal part of the candidate s.
 std::pair<cauchy_problem, cauchy_problem> dual_darboux_parts(const cauchy_problem& P, const dual_darboux_form& F,
                                                              const GiNaC::ex& s);
+
+/// (Otherwise: a twist without a closed form, numerically.) x^(t) = Q^(t) x^0 at each of `times`
+/// (sorted, >= 0) for P.dual_darboux: Q^' = -Omega^ Q^, Q^(0) = I by the sixth-order Magnus method
+/// on SE(3) (num::se3_tensor, relative tolerance 1e-13; Q^ stays a rigid motion whatever the step),
+/// with every value put in by `put`; with `derivative`, x^' = -Omega^ x x^ instead. Each result is
+/// the pair (primal, dual part). type_error naming a symbol left without a value; the errors of
+/// se3_tensor (a twist not finite, the step limit of about 10 s of work).
+std::vector<num::twist> dual_darboux_states(const cauchy_problem& P, const value_map& put,
+                                            const std::vector<double>& times, bool derivative = false);
+
+/// y = F_w(x0) for a dual w(t) (the rotation operator of VI.3.118 by transference): the problem
+/// y' = w x y, y(0) = x0 read as the dual Poisson-Darboux problem with Omega^ = -w (P.dual_darboux
+/// set); x0 a constant dual vector.
+std::shared_ptr<const cauchy_problem> dual_rotation_problem(const GiNaC::ex& w, const GiNaC::ex& x0,
+                                                            const GiNaC::ex& t);
 
 }  // namespace symrep::mechanics

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "symrep/core/error.h"
+#include "symrep/mechanics/dual_darboux.h"
 #include "symrep/mechanics/moving_frame.h"
 #include "symrep/numeric/evaluator.h"
 #include "symrep/numeric/integrate.h"
@@ -126,12 +127,24 @@ void add_forced_part(const reduced_solution& s, const value_map& put, const rota
 
 std::string reduced_solution::to_string() const {
     std::string s;
-    if (rotation_operator)  // (VI.3.118-119) y = F_w(x0) = R x0 with w = -(the problem's w)
+    if (problem->dual_darboux) {  // (issue 31 item 3) a twist without a closed form
+        // the twist (F: w = -Omega) as one literal where it has components
+        ex omega = rotation_operator ? -problem->dual_darboux->twist.omega : problem->dual_darboux->twist.omega;
+        if (vector_symbols(omega).empty() && !is_vector_literal(omega)) omega = subs_components(omega, {});
+        const std::string x0 = symrep::to_string(problem->dual_darboux->x0);
+        if (rotation_operator)  // F_w(x0) over a dual w(t): Omega^ = -w
+            s = "F_w(" + x0 + ") = R^ " + x0 + ", R^' = W R^, R^(0) = I, W x = w x x, w(t) = " +
+                symrep::to_string(omega);
+        else
+            s = problem->name + " = Q^ " + x0 + ", Q^' = -Omega Q^, Q^(0) = I, Omega = " + symrep::to_string(omega);
+        s += "   (docs/rigid_body.md section 3; numeric: Magnus on SE(3))";
+    } else if (rotation_operator) {  // (VI.3.118-119) y = F_w(x0) = R x0 with w = -(the problem's w)
         s = "F_w(" + symrep::to_string(problem->initial[0]) + ") = R " + symrep::to_string(problem->initial[0]) +
             ", R' = W R, R(0) = I, W x = w x x, w(t) = " + symrep::to_string(-form().terms.w) +
             "   (VI.3.118-119; numeric: Magnus on SO(3))";
-    else
+    } else {
         s = describe_reduction(*problem, form());
+    }
     if (const ex origin = moving_frame_origin(*problem); !origin.is_zero())
         s += "\n  seen from the frame whose origin moves along o(t) = " + symrep::to_string(origin) + ": " +
              problem->name + " = Q (psi - o)   ([CS21] Thm 12)";

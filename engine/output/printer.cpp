@@ -502,9 +502,16 @@ std::optional<std::string> dual_text(const ex& e) {
         }
     }
     std::string body;
+    numeric coefficient = 1;
+    std::vector<ex> factors;
+    if (!is_a<GiNaC::add>(d)) split_term(d, coefficient, factors);
+    const bool has_literal = holds_vector_literal(d);
     if (d.is_equal(1)) body = "eps";
     else if (is_a<numeric>(d)) body = pr(dual::dual_unit() * d).text;  // 2*eps, eps/2
-    else if (involves_vectors(d) || is_vector_literal(d))
+    else if (coefficient.is_integer() && !coefficient.is_zero() && !coefficient.is_equal(1) && !involves_vectors(d) &&
+             !has_literal)
+        body = pr(coefficient).text + "*eps*" + paren(pr(d / coefficient), l_product);  // 2*eps*x*y
+    else if (involves_vectors(d) || has_literal)
         body = is_vector_symbol(d) || is_vector_literal(d) ? "eps*" + print_ex(d) : "eps*(" + print_ex(d) + ")";
     else body = "eps*" + paren(pr(d), l_product);
     if (p.primal.is_zero()) return (negative ? "-" : "") + body;
