@@ -241,6 +241,23 @@ TEST(CauchyProblem, FloatingPointValuesCheckUpToRounding) {
     EXPECT_NE(t.out.str().find("r(0) differs"), std::string::npos) << t.out.str();
 }
 
+// A regular precession with float rates (w = [0.01 cos(0.03 t), 0.01 sin(0.03 t), 0.05]): the residual
+// of the closed form is 0 by sin^2 + cos^2 = 1 up to rounding. Put at the witness point all at once,
+// its float terms added up to one number, so that its size was its sum and it was "seen nonzero",
+// and a component of rounding only (1e-22) was measured against itself: check said false for a
+// correct solution. Now true, and a wrong rate is still seen.
+TEST(CauchyProblem, FloatRatesOfAPrecessionCheckUpToRounding) {
+    test_session t;
+    ASSERT_EQ(t.run("vector y(t)\nwd := [0.01*cos(0.03*t), 0.01*sin(0.03*t), 0.05]\n"
+                    "P := ode(y' + wd x y = 0, y(0) = [1, 0, 0])\ns := solve(P)\n"
+                    "Q := ode(y' + (wd + [0, 0, 1e-6]) x y = 0, y(0) = [1, 0, 0])"),
+              0)
+        << t.err.str();
+    EXPECT_TRUE(t.val("check(P, s)").as_bool()) << t.out.str();
+    EXPECT_NE(t.out.str().find("check: 0 up to rounding"), std::string::npos) << t.out.str();
+    EXPECT_FALSE(t.val("check(Q, s)").as_bool()) << t.out.str();
+}
+
 // The reduced Foucault problem (VI.2.94) has one square root, sqrt(w0^2 + |w|^2):
 // the printed solution has its coefficients in Q(...)[sqrt(w0^2 + |w|^2)] with
 // rationalized denominators (no 1/(sqrt(w0^2 + |w|^2) - |w|)), and is the thesis's.

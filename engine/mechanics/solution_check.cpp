@@ -110,18 +110,37 @@ double residual_ratio_at_point(const ex& r, const ex& t) {
             ~restore() { GiNaC::Digits = d; }
         } keep{saved};
         GiNaC::Digits = 40;
+        // with floats the components are measured against the largest of their sizes: a component
+        // made of rounding only (1e-22 next to terms of 1e-2 in another) is rounding, not a residual
+        GiNaC::numeric float_total = 0, float_size = 0;
+        bool any_float = false;
         for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::matrix>(c) ? c.nops() : 1); ++i) {
-            const ex ci = GiNaC::expand((GiNaC::is_a<GiNaC::matrix>(c) ? c.op(i) : c).subs(point));
+            const ex raw = GiNaC::is_a<GiNaC::matrix>(c) ? c.op(i) : c;
+            // with floats the terms are put at the point one by one: substituted together, the
+            // float terms (sin(0.03*t) at t = 7/3 is a number) add up to one number at once, and
+            // the sum of their sizes would be the size of the sum (a residual 0 by sin^2 + cos^2
+            // = 1 up to rounding was seen nonzero: check of a correct solution said false)
+            const bool floats = has_float(raw);
+            const ex ci = floats ? GiNaC::expand(raw) : GiNaC::expand(raw.subs(point));
             GiNaC::numeric total = 0, size = 0;
             for (std::size_t j = 0; j < (GiNaC::is_a<GiNaC::add>(ci) ? ci.nops() : 1); ++j) {
-                const ex v = GiNaC::evalf(GiNaC::is_a<GiNaC::add>(ci) ? ci.op(j) : ci);
+                const ex term = GiNaC::is_a<GiNaC::add>(ci) ? ci.op(j) : ci;
+                const ex v = GiNaC::evalf(floats ? term.subs(point) : term);
                 if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return -1;
                 total += GiNaC::ex_to<GiNaC::numeric>(v);
                 size += GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v));
             }
+            if (floats) {
+                any_float = true;
+                float_total = std::max(float_total, GiNaC::abs(total));
+                float_size = std::max(float_size, size);
+                continue;
+            }
             if (size.is_zero()) continue;
             ratio = std::max(ratio, GiNaC::ex_to<GiNaC::numeric>(GiNaC::abs(total) / size).to_double());
         }
+        if (any_float && !float_size.is_zero())
+            ratio = std::max(ratio, GiNaC::ex_to<GiNaC::numeric>(float_total / float_size).to_double());
     } catch (const std::exception&) {
         return -1;
     }
