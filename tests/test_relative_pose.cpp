@@ -17,6 +17,8 @@
 #include "symrep/core/error.h"
 #include "symrep/mechanics/relative_motion.h"
 #include "symrep/mechanics/relative_pose.h"
+#include "symrep/numeric/rotation_tensor.h"
+#include "symrep/vector/vector.h"
 
 namespace {
 
@@ -289,3 +291,80 @@ TEST(RelativePose, RefusesWhatIsNotAPose) {
 }
 
 }  // namespace
+
+// ---- the exact side of (*) (docs/rigid_body.md section 5) ----
+
+namespace {
+
+GiNaC::matrix symbol_matrix(const std::string& name) {
+    GiNaC::matrix M(3, 3);
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned j = 0; j < 3; ++j) M(i, j) = GiNaC::realsymbol(name + std::to_string(i) + std::to_string(j));
+    return M;
+}
+
+GiNaC::matrix skew3(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::ex& c) {
+    return GiNaC::matrix(3, 3, GiNaC::lst{0, -c, b, c, 0, -a, -b, a, 0});
+}
+
+bool zero_matrix(const GiNaC::ex& M) {
+    const GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(M.evalm());
+    for (unsigned i = 0; i < m.nops(); ++i)
+        if (!GiNaC::normal(GiNaC::expand(m.op(i))).is_zero()) return false;
+    return true;
+}
+
+}  // namespace
+
+// (*) once for all: for ANY Q_L, Q_D with Q' = -W Q (9 free entries each, w_L, w_D free),
+// A = Q_L A0 Q_D^T has A' = -W_L A + A W_D (product rule, nothing else), and for any rotation A
+// (the Cayley form (I - K)^-1 (I + K) of three free parameters: every rotation but the half
+// turns) A W_D A^T = skew(A w_D): so A' = W_rel A with w_rel = A w_D - w_L. A sign error in
+// either Poisson equation is seen.
+TEST(RelativePose, TheAttitudeOfThePoseFormulaIsAnIdentity) {
+    const GiNaC::matrix QL = symbol_matrix("l"), QD = symbol_matrix("d"), A0 = symbol_matrix("a");
+    const GiNaC::realsymbol l1("wl1"), l2("wl2"), l3("wl3"), d1("wd1"), d2("wd2"), d3("wd3");
+    const GiNaC::matrix WL = skew3(l1, l2, l3), WD = skew3(d1, d2, d3);
+    const GiNaC::matrix A = QL.mul(A0).mul(QD.transpose());
+    const GiNaC::matrix dQL = WL.mul_scalar(-1).mul(QL), dQD = WD.mul_scalar(-1).mul(QD);
+    const GiNaC::matrix dA = dQL.mul(A0).mul(QD.transpose()).add(QL.mul(A0).mul(dQD.transpose()));
+    const GiNaC::matrix rhs = WL.mul_scalar(-1).mul(A).add(A.mul(WD));
+    EXPECT_TRUE(zero_matrix(dA.sub(rhs)));
+    // Q' = +W Q for the deputy (the transposed convention) breaks it
+    const GiNaC::matrix dA_wrong = dQL.mul(A0).mul(QD.transpose()).add(QL.mul(A0).mul(WD.mul(QD).transpose()));
+    EXPECT_FALSE(zero_matrix(dA_wrong.sub(rhs)));
+    // a rotation A: A W_D A^T = skew(A w_D)
+    const GiNaC::realsymbol p("p"), q("q"), r("r");
+    const GiNaC::matrix K = skew3(p, q, r), I = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
+    const GiNaC::matrix R = I.sub(K).inverse().mul(I.add(K));
+    EXPECT_TRUE(zero_matrix(R.mul(R.transpose()).sub(I)));
+    const GiNaC::matrix Rw = R.mul(GiNaC::matrix(3, 1, GiNaC::lst{d1, d2, d3}));
+    EXPECT_TRUE(zero_matrix(R.mul(WD).mul(R.transpose()).sub(skew3(Rw(0, 0), Rw(1, 0), Rw(2, 0)))));
+}
+
+// The closed rotation tensors that relative_pose proves per call: Q' + W Q = 0, Q(0) = I exactly for
+// rational data (a constant w, a fixed axis, a regular precession), equal to the numeric tensors
+// relative_pose evaluates (Eigen: Rodrigues, VI.2.12, A B; 1e-13: rounding over a few turns);
+// nothing for a turning w.
+TEST(RelativePose, ClosedAttitudeTensorsAreProvedAndAreTheNumericOnes) {
+    const GiNaC::realsymbol t("t");
+    const GiNaC::numeric c(3, 100), a(1, 100), w3(1, 20);
+    const GiNaC::ex precession = vector_literal(a * GiNaC::cos(c * t), a * GiNaC::sin(c * t), w3);
+    const auto Q = mechanics::closed_attitude_tensor(precession, t);
+    ASSERT_TRUE(Q);
+    EXPECT_TRUE(Q->proved);
+    EXPECT_EQ(Q->rounding, 0);
+    // the numeric tensor: w = c u1 + R_u1(-c t) v with u1 = e3, c = -0.03 (R_u1(0.03 t) turns (a, 0, .)
+    // to (a cos, a sin, .)), v = (a, 0, w3 - c): Q = exp(-c t K_u1) exp(-t K_v)
+    const double T = 37.5;
+    const Matrix3d QN = num::rotation_exp(0.03 * T * Vector3d::UnitZ()) * num::rotation_exp(-T * Vector3d(0.01, 0, 0.08));
+    Matrix3d QS;
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned j = 0; j < 3; ++j)
+            QS(i, j) = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(Q->Q.op(3 * i + j).subs(t == GiNaC::numeric(75, 2)))).to_double();
+    EXPECT_LT((QS - QN).cwiseAbs().maxCoeff(), 1e-13) << QS << "\n" << QN;
+    const auto C = mechanics::closed_attitude_tensor(vector_literal(0, GiNaC::numeric(1, 10), 2), t);
+    ASSERT_TRUE(C);
+    EXPECT_TRUE(C->proved);
+    EXPECT_FALSE(mechanics::closed_attitude_tensor(vector_literal(t, 1, 0), t));  // turning: Magnus
+}

@@ -8,6 +8,7 @@
 // (Magnus on SO(3)); or the string "orbital" (locked to its own LVLH frame).
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "symrep/lang/builtins.h"
@@ -147,6 +148,56 @@ value matrix_value(const Eigen::Matrix3d& R) {
     return value(ex(m));
 }
 
+// The exact side of (*) (mechanics::closed_attitude_tensor): each closed rotation tensor derived
+// and checked, and the attitude A = Q_L A0 Q_D^T of the closed forms at the times against the
+// numbers returned (evaluated apart: Eigen's Rodrigues, VI.2.12, A B). 1e-12: both are at
+// rounding (1e-15) over the hundreds of turns of an example; a wrong sign of a rate is O(1).
+std::string exact_attitudes(const args_t& a, const ex& t, const mechanics::relative_pose_problem& P,
+                            const std::vector<double>& times, const std::vector<mechanics::pose_state>& poses,
+                            const builtin& b) {
+    using K = mechanics::attitude_motion::kind;
+    std::ostringstream os;
+    std::optional<mechanics::closed_attitude> Q[2];
+    const mechanics::attitude_motion* m[2] = {&P.leader, &P.deputy};
+    const char* who[2] = {"Q_L", "Q_D"};
+    for (int k = 0; k < 2; ++k) {
+        const K how = m[k]->how;
+        os << "relative_pose: " << who[k] << " (" << m[k]->name() << "): ";
+        if (how == K::orbital) {
+            os << "through the body's Kepler orbit (its LVLH axes), numeric\n";
+            continue;
+        }
+        if (how == K::numeric || !(Q[k] = mechanics::closed_attitude_tensor(vector_value(a[6 + k], b, "w"), t))) {
+            os << "no closed form (Magnus on SO(3)), numeric\n";
+            continue;
+        }
+        if (!Q[k]->proved) throw internal_error(b.name + ": the closed form of " + who[k] + " is not proved to solve "
+                                                "Q' + W Q = 0, Q(0) = I; nothing returned");
+        os << "closed form, each column proved to solve y' + w x y = 0, y(0) = e_i"
+           << (Q[k]->rounding > 0 ? " (up to rounding: floats in w)" : " (exactly)") << "\n";
+    }
+    if (!Q[0] && !Q[1]) return os.str();
+    // the closed forms at each time (I for a body without one is not used: compared only when both are closed)
+    if (Q[0] && Q[1]) {
+        double worst = 0;
+        for (std::size_t n = 0; n < times.size(); ++n) {
+            Eigen::Matrix3d QL, QD;
+            for (unsigned i = 0; i < 3; ++i)
+                for (unsigned j = 0; j < 3; ++j) {
+                    const ex T = num::from_double(times[n]);
+                    QL(i, j) = to_double(Q[0]->Q.op(3 * i + j).subs(t == T), b, "Q_L");
+                    QD(i, j) = to_double(Q[1]->Q.op(3 * i + j).subs(t == T), b, "Q_D");
+                }
+            worst = std::max(worst, (QL * P.start.attitude * QD.transpose() - poses[n].attitude).cwiseAbs().maxCoeff());
+        }
+        if (!(worst <= 1e-12))
+            throw internal_error(b.name + ": the attitude differs from Q_L A0 Q_D^T of the proved closed forms by " +
+                                 std::to_string(worst) + "; nothing returned");
+        os << "relative_pose: the attitude A is Q_L A0 Q_D^T of the proved closed forms (to 1e-12 at the times)\n";
+    }
+    return os.str();
+}
+
 value builtin_relative_pose(const builtin& b, const args_t& a, context& c) {
     mechanics::relative_pose_problem P;
     P.mu = to_double(arg_ex(a, 0, b), b, "mu");
@@ -175,6 +226,7 @@ value builtin_relative_pose(const builtin& b, const args_t& a, context& c) {
     const std::vector<mechanics::pose_state> poses = mechanics::relative_pose(P, times);
     std::ostringstream os;
     os << "relative_pose: leader attitude " << P.leader.name() << ", deputy attitude " << P.deputy.name() << "\n";
+    os << exact_attitudes(a, t, P, times, poses, b);
     c.report_fields(b.name, os.str(),
                     std::string("\"leader\": \"") + P.leader.name() + "\", \"deputy\": \"" + P.deputy.name() + "\"");
     list out;
@@ -213,7 +265,9 @@ void register_relative_pose_builtins(registry& r) {
              "orbits (universal variables, 50 digits): no linearization, no Euler angles, no secular terms; with "
              "wL = \"orbital\" rho is relative_motion's. Returns [rho, rho', A, w_rel] at T (A the deputy's axes, "
              "w_rel = A w_D - w_L, A' = W_rel A; a list of them for a list of times) and reports which class each "
-             "attitude motion was read as.",
+             "attitude motion was read as. A closed rotation tensor is derived symbolically and each of its columns "
+             "checked as the solution of y' + w x y = 0, y(0) = e_i (exactly, or up to rounding with floats); with "
+             "both closed, the attitude returned is compared with Q_L A0 Q_D^T of the proved forms (1e-12).",
              "[C23]; Thm VI.3.2.1 (VI.2.12, VI.3.117)",
              "relative_pose(398600.4418, [7000, 0, 0], [0, 7.546, 0], [0.1, 0, 0], [0, 0, 0], [1, 0, 0, 0], "
              "[0, 0, 0.001], [0.01*cos(0.03*t), 0.01*sin(0.03*t), 0.05], t = 600)",

@@ -8,7 +8,10 @@
 #include <string>
 
 #include "symrep/core/error.h"
+#include "symrep/mechanics/cauchy_problem.h"
 #include "symrep/mechanics/relative_motion.h"
+#include "symrep/mechanics/turning_frame.h"
+#include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
 
@@ -189,6 +192,27 @@ std::vector<pose_state> relative_pose(const relative_pose_problem& P, const std:
         p.attitude = QL.Q[k] * s0.attitude * QD.Q[k].transpose();
         p.rate = p.attitude * QD.w[k] - QL.w[k];
     }
+    return out;
+}
+
+std::optional<closed_attitude> closed_attitude_tensor(const GiNaC::ex& w, const GiNaC::ex& t) {
+    closed_attitude out;
+    GiNaC::matrix Q(3, 3);
+    out.proved = true;
+    for (unsigned i = 0; i < 3; ++i) {
+        const GiNaC::ex e = vector_literal(i == 0, i == 1, i == 2);
+        // the column Q e_i: y' = -w x y, y(0) = e_i (VI.3.117 on a vector)
+        const auto P = rotation_problem(-w, e, t);
+        const auto y = closed_solution(*P, *P->turning);
+        if (!y) return std::nullopt;
+        const solution_check k = check(*P, *y);
+        out.proved = out.proved && bool(k);
+        out.rounding = std::max(out.rounding, k.rounding);
+        const GiNaC::ex c = vector_symbols(*y).empty() ? subs_components(*y, {}) : *y;
+        if (!is_vector_literal(c)) return std::nullopt;
+        for (unsigned r = 0; r < 3; ++r) Q(r, i) = c.op(r);
+    }
+    out.Q = Q;
     return out;
 }
 

@@ -34,10 +34,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <ginac/ginac.h>
 
 #include "symrep/numeric/rotation_tensor.h"
 #include "symrep/numeric/se3.h"
@@ -98,5 +100,23 @@ struct relative_pose_problem {
 /// non-orthogonal attitude, mu <= 0, a radial orbit where an orbital frame is asked for, and
 /// the errors of Kepler's solution and of the Magnus integrator.
 std::vector<pose_state> relative_pose(const relative_pose_problem& P, const std::vector<double>& times);
+
+/// The exact side of (*): a body's rotation tensor Q(t) (Q' = -W Q, Q(0) = I) in closed form from
+/// its angular velocity w(t) (body components, an expression in t with numbers only), derived by
+/// the engine's closed rotation (turning_frame.h: Rodrigues for a constant w, VI.2.12 for a fixed
+/// axis, the composition A B of a regular precession) on the three basis vectors, each column
+/// checked as the solution of y' + w x y = 0, y(0) = e_i (mechanics::check: the residual proved 0,
+/// exactly, or up to rounding where w holds floats, and the initial value). With both tensors
+/// proved, (*) needs nothing more: A = Q_L A0 Q_D^T gives A' = -W_L A + A W_D = W_rel A for every
+/// pair of solutions, and rho = Q_L psi carries the inertial equation into the leader's frame for
+/// every psi (Thm VI.3.2.1), both proved once for all in tests/test_relative_pose.cpp.
+struct closed_attitude {
+    GiNaC::ex Q;          ///< the 3x3 matrix Q(t)
+    bool proved = false;  ///< every column checked
+    double rounding = 0;  ///< > 0: proved up to rounding (floats), the largest remainder ratio
+};
+
+/// Nothing when w has no closed rotation tensor here (it turns otherwise: Magnus on SO(3)).
+std::optional<closed_attitude> closed_attitude_tensor(const GiNaC::ex& w, const GiNaC::ex& t);
 
 }  // namespace symrep::mechanics
