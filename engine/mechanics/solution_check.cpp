@@ -72,6 +72,15 @@ double rounding_ratio(const ex& residual, const std::vector<ex>& parts, const ex
         const double x = largest_coefficient(as_components(p, is_vector), t);
         if (x < 0) return -1;
         scale = std::max(scale, x);
+        // and term by term: the terms of one part may cancel to rounding by themselves (y' of
+        // y = cos(a t) e3 + (1 - cos(a t))/a^2 (w . e3) w, w = a e3, is 0 up to rounding: measured
+        // as a whole, the part's size was the rounding, and a correct solution was refused)
+        const ex e = GiNaC::expand(p);
+        if (GiNaC::is_a<GiNaC::add>(e))
+            for (std::size_t i = 0; i < e.nops(); ++i) {
+                const double y = largest_coefficient(as_components(e.op(i), is_vector), t);
+                if (y > scale) scale = y;
+            }
     }
     if (r == 0) return 0;
     return scale > 0 && r <= rounding_tolerance() * scale ? r / scale : -1;
