@@ -96,6 +96,7 @@ assert v is not None
 w: symrep.Value = v.inverse()
 p: symrep.Value = v.charpoly(s.symbol("X"))
 t: str = (w * 2 + 1).text
+d: symrep.Value = symrep.eps * 2 + 1
 f = s.compile("a*t", "t", a=2)
 y = f(np.zeros(3))
 z: float = float(y[0])

@@ -21,7 +21,7 @@ def test_eps_is_the_dual_unit_in_statements_and_operators(s):
     x, y = s.eval("x"), s.eval("y")
     v = x + eps * y
     assert v.text == "x + eps*y"
-    assert (v * v).text == "x^2 + eps*2*x*y"
+    assert (v * v).text == "x^2 + 2*eps*x*y"
     assert (v * v) == s.eval("(x + eps*y)^2")
     assert s.eval("sin(x + eps*y)") == s.eval("sin(x) + eps*y*cos(x)")
     assert symrep.eps == s.eval("eps")

@@ -155,6 +155,11 @@ def __getattr__(name):
     raise AttributeError("module %r has no attribute %r" % (__name__, name))
 
 
+def __dir__():
+    """The module's names with eps (made by __getattr__ for the default session of the thread)."""
+    return sorted(set(globals()) | {"eps"})
+
+
 from ._sympy import from_sympy  # noqa: E402
 
 __all__ = ["Session", "Value", "Compiled", "ValueLike", "Error", "ParseError", "LanguageTypeError",

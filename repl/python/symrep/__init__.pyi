@@ -12,6 +12,8 @@ from ._symrep import version as version
 
 __version__: str
 __all__: List[str]
+# the dual unit (eps^2 = 0) in the default session of the thread (module __getattr__)
+eps: Value
 
 class Error(Exception):
     message: str
