@@ -123,6 +123,10 @@ value solve_problem(const value& p) {
         // problem carries the origin o (moving_frame_origin)
         return value(reduction{std::make_shared<const mechanics::reduced_solution>(
             mechanics::reduced_solution{F->rotating, {}})});
+    if (const auto F = mechanics::moving_frame_of(p.as_problem()); F && !F->carried.empty())
+        // ([CS21] Thm 12) a turning frame that carries vectors: r = R (psi - o), R by Magnus
+        return value(reduction{std::make_shared<const mechanics::reduced_solution>(
+            mechanics::reduced_solution{p.problem_pointer(), {}})});
     if (numeric_dual(p.as_problem()))
         // (issue 31 item 3) a twist without a closed form: x^ = Q^ x^0, Q^ by Magnus on SE(3)
         return value(reduction{std::make_shared<const mechanics::reduced_solution>(
@@ -304,6 +308,16 @@ value verify_reduction(const builtin& b, const args_t& a, context& c) {
     if (r.derivative) throw type_error(b.name + ": argument 2 must be the solution, not its derivative");
     const data_values d = reduction_values(r, read_values(a[2], b, 2));
     const auto [T, n, opt] = verify_arguments(a, b);
+    if (const auto F = mechanics::moving_frame_of(P); F && !F->carried.empty()) {
+        // ([CS21] Thm 12) against the frame's equation with R integrated beside it
+        const auto put = [&](const ex& e) { return put_values_limit(e, d); };
+        const num::sampled_function cf = [&](const std::vector<double>& times, double* out) {
+            const auto x = mechanics::evaluate(*r.solution, put, times);
+            for (std::size_t k = 0; k < times.size(); ++k)
+                for (int i = 0; i < 3; ++i) out[6 * k + i] = x[k].r[i], out[6 * k + 3 + i] = x[k].v[i];
+        };
+        return verify_carried_frame(b, P, *F, cf, d, T, std::size_t(n), opt, c);
+    }
     if (is_dual_reduction(r)) {  // x^ = Q^ x^0 (Magnus on SE(3)) against P as six real equations
         if (!P.dual_darboux) throw type_error(b.name + ": the solution is of a dual problem, P is not");
         const auto put = [&](const ex& e) { return put_values_limit(e, d); };

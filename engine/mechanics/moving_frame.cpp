@@ -10,6 +10,8 @@
 #include "symrep/core/error.h"
 #include "symrep/dual/dual.h"
 #include "symrep/mechanics/turning_frame.h"
+#include "symrep/numeric/evaluator.h"
+#include "symrep/numeric/rotation_tensor.h"
 #include "symrep/vector/vector.h"
 
 namespace symrep::mechanics {
@@ -150,19 +152,30 @@ std::shared_ptr<const cauchy_problem> moving_frame_problem(const std::shared_ptr
     F->o = o;
     F->inertial = P0p;
     const ex dw = w.is_zero() ? ex(0) : diff_t(w, t);
-    const auto rotate = [&](const ex& V) { return frame_rotation(w, V, t); };
+    const auto strict = [&](const ex& V) { return frame_rotation(w, V, t); };
+    // R closed (a constant w, a fixed direction, a regular precession), or each R V the frame's
+    // equation needs a vector function of its own (moving_frame_form::carried)
+    const bool closed_R = w.is_zero() || frame_rotation(w, vector_literal(1, 0, 0), t).has_value();
+    std::vector<std::pair<ex, ex>> carried_list;
+    const auto carried_symbol = [&](const ex& V, const std::string& name) -> ex {
+        if (V.is_zero() || (is_vector_literal(V) && equal(V, 0))) return 0;
+        for (const auto& [sym, v] : carried_list)
+            if (v.is_equal(V)) return sym;
+        const ex sym = GiNaC::realsymbol(name);
+        register_vector_function(sym, t);
+        carried_list.push_back({sym, V});
+        return sym;
+    };
+    const auto rotate = [&](const ex& V) -> std::optional<ex> {
+        if (closed_R) return strict(V);
+        if (is_vector_symbol(V)) return carried_symbol(V, "R_" + to_string(V));
+        std::size_t literals = 1;  // R_V1, R_V2, ... for the literals, in the order met
+        for (const auto& [sym, v] : carried_list) literals += to_string(sym).rfind("R_V", 0) == 0;
+        return carried_symbol(V, "R_V" + std::to_string(literals));
+    };
 
     // d = -R o: where the frame sees the inertial origin (the attracting centre)
-    if (!o.is_zero()) {
-        const auto Ro = rotate(o);
-        if (!Ro)
-            throw domain_error("moving_frame: the frame turns with w(t) = " + to_string(w) +
-                               ", whose rotation R(t) has no closed form, and its origin moves (o(t) = " + to_string(o) +
-                               "): the equation in the frame holds R(t) o(t) and cannot be written; evaluate it with "
-                               "the numeric moving_frame_states (C++), or state the problem in the frame with the "
-                               "origin's acceleration A(t) as a free term");
-        F->d = -*Ro;
-    }
+    if (!o.is_zero()) F->d = -*(closed_R ? strict(o) : std::optional<ex>(carried_symbol(o, "R_o")));
     const ex& X = P0.unknowns[0];
     const ex &X1 = P0.unknowns[1], &X2 = P0.unknowns[2];
 
@@ -176,7 +189,7 @@ std::shared_ptr<const cauchy_problem> moving_frame_problem(const std::shared_ptr
         const ex y = X, y1 = X1, y2 = X2;
         try {
             Pr->expression = carried(P0.expression, {X, X1, X2},
-                                     {y, y1 + cross(w, y), frame_operator(w, dw, y, y1, y2)}, rotate);
+                                     {y, y1 + cross(w, y), frame_operator(w, dw, y, y1, y2)}, strict);
             const ex w00 = w.is_zero() ? ex(0) : at_zero(w, t);
             Pr->initial = {P0.initial[0], tidy(P0.initial[1] - cross(w00, P0.initial[0]))};
             read_problem(*Pr);
@@ -199,8 +212,8 @@ std::shared_ptr<const cauchy_problem> moving_frame_problem(const std::shared_ptr
     if (!o.is_zero()) {
         const ex o1 = diff_t(o, t), o2 = diff_t(o1, t);
         Ro = -F->d;
-        Ro1 = *rotate(o1);
-        A = *rotate(o2);
+        Ro1 = closed_R ? *strict(o1) : carried_symbol(o1, "R_do");
+        A = closed_R ? *strict(o2) : carried_symbol(o2, "R_ddo");
     }
     P.expression = carried(P0.expression, {X, X1, X2},
                            {r + Ro, r1 + cross(w, r) + Ro1, frame_operator(w, dw, r, r1, r2) + A}, rotate);
@@ -208,6 +221,7 @@ std::shared_ptr<const cauchy_problem> moving_frame_problem(const std::shared_ptr
     const ex v00 = tidy(P0.initial[1] - (o.is_zero() ? ex(0) : at_zero(diff_t(o, t), t)) -
                         (w.is_zero() ? ex(0) : cross(at_zero(w, t), r00)));
     P.initial = {r00, v00};
+    F->carried = carried_list;
     auto Pp = std::make_shared<const cauchy_problem>(std::move(P));
     if (F->rotating && !o.is_zero()) register_frame_entry({F->rotating, nullptr, o});
     register_frame_entry({Pp, F, 0});
@@ -224,8 +238,10 @@ zero_decision prove_moving_frame(const cauchy_problem& P, const moving_frame_for
         const auto y = frame_rotation(w, x, t);
         if (!y)
             throw domain_error("the rotation R(t) of the frame, R' = -W R with w(t) = " + to_string(w) +
-                               ", has no closed form: the reduction is proved once for every w (VI.3.2.1) and "
-                               "evaluated numerically; compare it with verify(P, s, values, T)");
+                               ", has no closed form: r = R (psi - o) solves the frame's equation for every R with "
+                               "R' = -W R and every psi ([CS21] Thm 11, proved once for all in "
+                               "tests/test_moving_frame.cpp), R is numeric here; compare the solution with the "
+                               "frame's equation numerically: verify(P, s, values, T)");
         return *y;
     };
     // P's equation is E0 with X -> r + R o, X' -> r' + w x r + R o', X'' -> L[r] + R o'' and V -> R V
@@ -258,6 +274,9 @@ ex seen_from_frame(const moving_frame_form& F, const ex& line, const ex& t) {
 }
 
 ex solve_moving_frame(const cauchy_problem& P, const moving_frame_form& F) {
+    if (!F.carried.empty())
+        throw closed_form_error("the solution " + P.name + " = R (psi - o) of the problem seen from the frame: R' = -W R "
+                                "with w(t) = " + to_string(F.w) + " has no closed form (Magnus on SO(3) evaluates it)");
     if (inertial_is_numeric(F))
         throw closed_form_error("the solution " + P.name + " = R (psi - o) of the problem seen from the frame: psi, " +
                                 describe_reduction(*F.inertial, *F.inertial->turning) +
@@ -288,6 +307,58 @@ std::vector<rotating_frame_state> moving_frame_states(const numeric_moving_frame
         const Eigen::Vector3d Qo = Q[i] * P.origin(times[i]);
         out[i].r -= Qo;
         out[i].v += -(Q[i] * P.origin_velocity(times[i])) + P.rotating.w(times[i]).cross(Qo);
+    }
+    return out;
+}
+
+namespace {
+
+// A vector expression with its values in, as one literal of functions of t.
+ex literal_in_t(const ex& e, const std::string& what) {
+    if (e.is_zero()) return vector_literal(0, 0, 0);
+    ex v;
+    try {
+        v = GiNaC::is_a<GiNaC::matrix>(e) ? e : subs_components(e, {});
+    } catch (const type_error&) {
+        throw type_error(what + " is not a vector of numbers: " + to_string(e) + " (give every vector a value)");
+    }
+    if (!is_vector_literal(v)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
+    return v;
+}
+
+}  // namespace
+
+std::vector<rotating_frame_state> carried_frame_states(const moving_frame_form& F,
+                                                       const std::function<ex(const ex&)>& put,
+                                                       const std::vector<double>& times) {
+    const cauchy_problem& P0 = *F.inertial;
+    if (inertial_is_numeric(F))
+        throw closed_form_error("the inertial solution psi, " + describe_reduction(P0, *P0.turning) +
+                                "\nhas no closed form, and the frame carries constant vectors: not evaluated");
+    const ex& t = P0.t;
+    const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+    const ex psi = literal_in_t(put(solve_unwitnessed(P0)), "the inertial solution " + P0.name);
+    const ex o = literal_in_t(put(F.o), "the origin's path o(t)");
+    const ex w = literal_in_t(put(F.w), "the frame's w(t)");
+    const auto f = [&](const ex& e) { return std::make_shared<num::compiled_function>(num::compile(e, {t})); };
+    const auto p0 = f(psi), p1 = f(psi.diff(ts)), q0 = f(o), q1 = f(o.diff(ts)), fw = f(w);
+    const num::angular_velocity omega = [fw](double x) {
+        const Eigen::Vector3d v = fw->eval3(&x);
+        if (!v.allFinite()) throw domain_error("w(t) has no finite value at t = " + std::to_string(x));
+        return v;
+    };
+    num::rotation_tensor_options options;
+    options.max_steps = 5'000'000;  // about 10 s of work (as reduced_solution.cpp)
+    const std::vector<Eigen::Matrix3d> Q = num::rotation_tensor(omega, times, options).Q;
+    std::vector<rotating_frame_state> out;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const double x = times[i];
+        // (Thm 12) r = Q (psi - o), r' = Q (psi' - o') - w x r (Q' = -W Q)
+        const Eigen::Vector3d r = Q[i] * (p0->eval3(&x) - q0->eval3(&x));
+        const Eigen::Vector3d v = Q[i] * (p1->eval3(&x) - q1->eval3(&x)) - omega(x).cross(r);
+        if (!r.allFinite() || !v.allFinite())
+            throw domain_error("the solution in the frame has no finite value at t = " + std::to_string(x));
+        out.push_back({r, v});
     }
     return out;
 }

@@ -25,10 +25,11 @@
 // fixed direction w = s(t) u (VI.2.12, the angle |u| int_0^t s), a regular precession (Q = A B,
 // turning_frame.h). Kepler's psi is numeric (universal variables): the solution is then the
 // reduction object of reduced_solution.h with the origin o(t) (r = Q (psi - o)), evaluated by eval
-// and verify. A turning w has no closed R: the frame's equation, which holds R(t) V and d(t), cannot
-// be written as an expression; moving_frame_states() below evaluates such a frame numerically
-// (Magnus on SO(3) for R, psi as above), and a problem stated directly in the frame with the
-// origin's acceleration A(t) as a free term, m (L[r] + A(t)) = F(t), is solved by the VI.3 path
+// and verify. A turning w has no closed R: the frame's equation then holds each R(t) V it needs (a
+// constant vector of P0, o, o', o'') as a vector function of t of its own (moving_frame_form::
+// carried), solved numerically by carried_frame_states() (psi closed) or moving_frame_states()
+// (Kepler), R by Magnus on SO(3); a problem stated directly in the frame with the origin's
+// acceleration A(t) as a free term, m (L[r] + A(t)) = F(t), is solved by the VI.3 path
 // (turning_frame.h) already.
 #pragma once
 
@@ -54,6 +55,12 @@ struct moving_frame_form {
     /// y = R psi, the same problem seen from the frame turning with w about the inertial origin
     /// (VI.3.132), read by read_problem(): the reduction when psi has no closed form; may be null.
     std::shared_ptr<const cauchy_problem> rotating;
+    /// Where R(t) has no closed form (a turning w) and the frame's equation needs R V (a constant
+    /// vector of P0, the origin's path o and its derivatives): each R(t) V(t) is a vector function
+    /// of t of its own, named R_V (R_g, R_o, R_do, R_ddo, R_V1 for a literal), paired here with V.
+    /// Empty when R is closed. Such a problem is solved numerically (r = Q (psi - o), Q by Magnus on
+    /// SO(3), psi closed or by universal variables) and verified with R integrated beside it.
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> carried;
 };
 
 /// R x in closed form for the frame's w (R' = -W R, R(0) = I: a constant w, a fixed direction, a
@@ -62,9 +69,9 @@ std::optional<GiNaC::ex> frame_rotation(const GiNaC::ex& w, const GiNaC::ex& x, 
 
 /// (Thm 11) The inertial problem P0 (second order, vector) seen from the frame (w, o): the problem
 /// in the frame (its unknown named as P0's), registered as a moving-frame problem (moving_frame_of).
-/// domain_error: a scalar or first-order P0, a w without a value at t = 0, an o that is not a vector
-/// of t finite at 0, and a turning w with a translation or with a constant vector in P0 (R(t) has
-/// no closed form).
+/// With a turning w (R(t) not closed) every R V the equation needs is a vector function of its own
+/// (moving_frame_form::carried). domain_error: a scalar or first-order P0, a w without a value at
+/// t = 0, an o that is not a vector of t finite at 0.
 std::shared_ptr<const cauchy_problem> moving_frame_problem(const std::shared_ptr<const cauchy_problem>& P0,
                                                            const GiNaC::ex& w, const GiNaC::ex& o);
 
@@ -102,6 +109,15 @@ GiNaC::ex seen_from_frame(const moving_frame_form& F, const GiNaC::ex& line, con
 /// True when the inertial psi has no closed form (a nonlinear central field): solve() refuses and
 /// the solution is the reduction object.
 bool inertial_is_numeric(const moving_frame_form& F);
+
+/// (Thm 12 numerically, for a frame with carried vectors) r = Q (psi - o) and r' = Q (psi' - o') - w x r
+/// at each time (sorted, >= 0): psi the inertial problem's closed form with the values put in by
+/// `put`, o(t) likewise, Q by Magnus on SO(3) (num::rotation_tensor, 1e-13). type_error naming a
+/// symbol without a value; closed_form_error when psi has no closed form (Kepler: the reduction
+/// object of `rotating` with the origin, reduced_solution.h).
+std::vector<rotating_frame_state> carried_frame_states(const moving_frame_form& F,
+                                                       const std::function<GiNaC::ex(const GiNaC::ex&)>& put,
+                                                       const std::vector<double>& times);
 
 /// The numeric frame (any w(t), a turning one too): the rotating-frame problem of the inertial
 /// motion (w, field, psi(0), psi'(0) as rotating_frame_problem's r0 and v0 + w(0) x r0 ... see the

@@ -127,7 +127,17 @@ void add_forced_part(const reduced_solution& s, const value_map& put, const rota
 
 std::string reduced_solution::to_string() const {
     std::string s;
-    if (problem->dual_darboux) {  // (issue 31 item 3) a twist without a closed form
+    const auto frame = moving_frame_of(*problem);
+    if (frame && !frame->carried.empty()) {  // ([CS21] Thm 12) a turning frame that carries vectors
+        s = problem->name + " = R (psi - o), R' = -W R, R(0) = I, w(t) = " + symrep::to_string(frame->w) +
+            "   ([CS21] Thm 12; numeric: Magnus on SO(3))\n  psi: the solution of the inertial problem " +
+            symrep::to_string(frame->inertial->expression) + " = 0";
+        if (!frame->o.is_zero()) s += "\n  o(t) = " + symrep::to_string(frame->o);
+        std::string names;
+        for (const auto& [sym, v] : frame->carried)
+            names += (names.empty() ? "" : ", ") + symrep::to_string(sym) + " = R " + symrep::to_string(v);
+        s += "\n  the frame's equation holds " + names;
+    } else if (problem->dual_darboux) {  // (issue 31 item 3) a twist without a closed form
         // the twist (F: w = -Omega) as one literal where it has components
         ex omega = rotation_operator ? -problem->dual_darboux->twist.omega : problem->dual_darboux->twist.omega;
         if (vector_symbols(omega).empty() && !is_vector_literal(omega)) omega = subs_components(omega, {});
@@ -208,6 +218,8 @@ rotating_frame_problem numeric_problem(const reduced_solution& s, const value_ma
 std::vector<rotating_frame_state> evaluate(const reduced_solution& s, const value_map& put,
                                            const std::vector<double>& times) {
     const cauchy_problem& P = *s.problem;
+    if (const auto frame = moving_frame_of(P); frame && !frame->carried.empty())
+        return carried_frame_states(*frame, put, times);  // ([CS21] Thm 12) r = Q (psi - o)
     const rotating_frame_problem R = numeric_problem(s, put);
     // a bound on the Magnus steps (about 10 s), so that t = 1e12 is refused with a reason
     // instead of running for hours
