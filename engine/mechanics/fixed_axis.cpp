@@ -199,7 +199,8 @@ ex solve_fixed_axis(const cauchy_problem& P, const fixed_axis_form& F) {
             psi -= C * canonical(W) + S / U * canonical(cross(F.u, W));
         }
     }
-    const ex U = norm(F.u), c = GiNaC::cos(F.angle), s = GiNaC::sin(F.angle);
+    const ex U = norm(F.u);
+    const auto [c, s] = cos_sin_of_angle(F.angle);
     const ex r = c * psi - s / U * cross(F.u, psi) + (1 - c) / (U * U) * dot(F.u, psi) * F.u;
     // with integral objects: one term per vector (the literal parts and the dot products of
     // a literal axis collected), which is what a reader needs to see I_c and I_s

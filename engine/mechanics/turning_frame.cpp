@@ -272,7 +272,8 @@ namespace {
 
 // The rotation by -theta about the unit vector n: Q' = -W Q for w = theta' n (VI.2.12).
 ex rotate_unit(const ex& n, const ex& theta, const ex& x) {
-    return GiNaC::cos(theta) * x - GiNaC::sin(theta) * cross(n, x) + (1 - GiNaC::cos(theta)) * dot(n, x) * n;
+    const auto [c, s] = cos_sin_of_angle(theta);
+    return c * x - s * cross(n, x) + (1 - c) * dot(n, x) * n;
 }
 
 }  // namespace
@@ -281,8 +282,8 @@ std::optional<ex> closed_rotation(const turning_frame_form& F, const ex& x, cons
     if (F.terms.w.is_zero()) return x;
     if (F.u && F.angle) {
         const ex U = norm(*F.u);
-        return GiNaC::cos(*F.angle) * x - GiNaC::sin(*F.angle) / U * cross(*F.u, x) +
-               (1 - GiNaC::cos(*F.angle)) / (U * U) * dot(*F.u, x) * *F.u;
+        const auto [c, s] = cos_sin_of_angle(*F.angle);
+        return c * x - s / U * cross(*F.u, x) + (1 - c) / (U * U) * dot(*F.u, x) * *F.u;
     }
     if (F.precessing) {  // Q = A(t) B(t): the spin v first, then the carrying rotation about u1
         const auto& p = *F.precessing;
@@ -514,6 +515,29 @@ std::shared_ptr<const cauchy_problem> rotation_problem(const ex& w, const ex& x0
     if (!F) throw domain_error("F_w(x): " + (why.empty() ? std::string("w(t) = " + to_string(w) + " is not read") : why));
     P->turning = std::make_shared<const turning_frame_form>(std::move(*F));
     return P;
+}
+
+// True when a shows a minus sign of its own: a negative number, a product with a negative
+// numeric factor (-t^2/2, -sin(t)), a sum of such terms.
+static bool shows_minus(const ex& a) {
+    if (GiNaC::is_a<GiNaC::numeric>(a)) return GiNaC::ex_to<GiNaC::numeric>(a).is_negative();
+    if (GiNaC::is_a<GiNaC::mul>(a)) {
+        const ex c = a.op(a.nops() - 1);
+        return GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_negative();
+    }
+    if (GiNaC::is_a<GiNaC::add>(a)) {
+        for (std::size_t i = 0; i < a.nops(); ++i)
+            if (!shows_minus(a.op(i))) return false;
+        return true;
+    }
+    return false;
+}
+
+// cos(a) and sin(a) with a's own minus sign taken out: cos(-b) = cos(b), sin(-b) = -sin(b)
+// (the solver writes the angle of Q' = -W Q as -alpha; cos(-t^2/2) printed so before)
+std::pair<ex, ex> cos_sin_of_angle(const ex& a) {
+    if (shows_minus(a)) return {GiNaC::cos(-a), -GiNaC::sin(-a)};
+    return {GiNaC::cos(a), GiNaC::sin(a)};
 }
 
 }  // namespace symrep::mechanics
