@@ -10,6 +10,7 @@
 #include "symrep/core/error.h"
 #include "symrep/core/interrupt.h"
 #include "symrep/core/progress.h"
+#include "symrep/numeric/magnus_control.h"
 
 namespace symrep::num {
 
@@ -77,60 +78,23 @@ rotation_tensor_result rotation_tensor(const angular_velocity& w, const std::vec
             throw error("rotation_tensor: the angular velocity is not finite at t = " + std::to_string(s));
         return v;
     };
-    const double span = std::max(times.back(), 1.0);
-    const double tol = options.rel_tol / span;  // per unit time: the global error stays near rel_tol
-    Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();
-    double t = 0.0;
-    const double rate = counted(0.0).norm();
-    double h = std::min(0.1 / std::max(rate, 1e-300), std::max(times.back(), 1e-300) / 16.0);
-    if (options.max_step > 0) h = std::min(h, options.max_step);
-    // Step control. The two-step estimate err of the local error is reliable only
-    // while |E1 - E2| stands above rounding (a few ulps); below that the step is
-    // kept as it is: an estimate made of rounding noise would move it at random.
-    // The first step (0.1/|w|) is long enough for a reliable estimate, from which
-    // the error model err ~ C h^7 gives the step for the tolerance.
-    const double noise = 8 * std::numeric_limits<double>::epsilon();
-    progress_task task("rotation tensor", times.back());
-    for (const double target : times) {
-        while (t < target) {
-            check_interrupt();
-            const bool last = h >= target - t;
-            // the step as the difference of two representable times, so that the
-            // steps tile [0, t] exactly (t + h rounded would drift by ulps of t per step)
-            const double t_next = last ? target : t + h;
-            const double step = t_next - t;
-            const Eigen::Matrix3d E1 = rotation_exp(magnus6_step(counted, t, step));
-            const Eigen::Matrix3d E2 = rotation_exp(magnus6_step(counted, t + step / 2, step / 2)) *
-                                       rotation_exp(magnus6_step(counted, t, step / 2));
-            const double diff = (E1 - E2).norm();
-            const double err = diff / 63.0;  // Richardson: the two half steps are off by about |E1 - E2| / (2^6 - 1)
-            const double allowed = tol * step;
-            const bool reliable = diff > noise;
-            if (!reliable || err <= allowed) {
-                Q = E2 * Q;
-                // one Newton-Schulz step towards the nearest rotation: the rounding
-                // of the products does not accumulate in Q^T Q
-                Q = 0.5 * Q * (3.0 * Eigen::Matrix3d::Identity() - Q.transpose() * Q);
-                t = t_next;
-                task.report(t);
-                if (++res.steps > options.max_steps)
-                    throw error("rotation_tensor: more than " + std::to_string(options.max_steps) +
-                                " steps to reach t = " + std::to_string(target) +
-                                " (a very long time for this w(t), or a w(t) that is not smooth)");
-            } else if (step <= 1e-10 * std::max(1.0, t)) {
-                throw error("rotation_tensor: the angular velocity is not smooth near t = " + std::to_string(t) +
-                            " (the step fell below 1e-10 of t)");
-            }
-            if (reliable) {
-                const double next = step * std::clamp(0.9 * std::pow(allowed / err, 1.0 / 6.0), 0.2, 4.0);
-                if (!last || err > allowed) h = next;
-            }
-            if (options.max_step > 0) h = std::min(h, options.max_step);
+    // the step control of numeric/magnus_control.h on SO(3)
+    struct so3 {
+        using element = Eigen::Matrix3d;
+        const angular_velocity& w;
+        element step(double t0, double h) const { return rotation_exp(magnus6_step(w, t0, h)); }
+        double distance(const element& a, const element& b, const element&) const { return (a - b).norm(); }
+        void advance(element& Q, const element& E) const {
+            Q = E * Q;
+            // one Newton-Schulz step towards the nearest rotation: the rounding of the
+            // products does not accumulate in Q^T Q
+            Q = 0.5 * Q * (3.0 * Eigen::Matrix3d::Identity() - Q.transpose() * Q);
         }
-        res.Q.push_back(Q);
-    }
+    } group{counted};
+    const magnus_control control{"rotation_tensor", "the angular velocity", "w(t)", "rotation tensor",
+                                 options.rel_tol, options.max_step, options.max_steps};
+    res.Q = magnus_integrate(group, Eigen::Matrix3d::Identity(), times, counted(0.0).norm(), control, res.steps);
     res.evaluations = evaluations;
-    task.finish();
     return res;
 }
 

@@ -10,6 +10,7 @@
 #include "symrep/core/error.h"
 #include "symrep/core/interrupt.h"
 #include "symrep/core/progress.h"
+#include "symrep/numeric/magnus_control.h"
 #include "symrep/numeric/rotation_tensor.h"
 
 namespace symrep::num {
@@ -176,59 +177,30 @@ se3_tensor_result se3_tensor(const twist_function& xi, const std::vector<double>
             throw error("se3_tensor: the twist is not finite at t = " + std::to_string(s));
         return x;
     };
-    const double span = std::max(times.back(), 1.0);
-    const double tol = options.rel_tol / span;  // per unit time: the global error stays near rel_tol
-    rigid_motion Q;
-    double L = options.length_scale;  // the length scale of the error norm
-    const bool automatic_scale = L == 0;
-    double t = 0.0;
-    const double rate = counted(0.0).w.norm();
-    double h = std::min(0.1 / std::max(rate, 1e-300), std::max(times.back(), 1e-300) / 16.0);
-    if (options.max_step > 0) h = std::min(h, options.max_step);
-    // Step control as in rotation_tensor: the estimate |E1 - E2| is trusted only
-    // above rounding; err ~ C h^7 gives the next step.
-    const double noise = 8 * std::numeric_limits<double>::epsilon();
-    progress_task task("SE(3) tensor", times.back());
-    for (const double target : times) {
-        while (t < target) {
-            check_interrupt();
-            const bool last = h >= target - t;
-            const double t_next = last ? target : t + h;  // the steps tile [0, t] exactly
-            const double step = t_next - t;
-            const rigid_motion E1 = se3_exp(se3_magnus6_step(counted, t, step));
-            const rigid_motion E2 = se3_exp(se3_magnus6_step(counted, t + step / 2, step / 2)) *
-                                    se3_exp(se3_magnus6_step(counted, t, step / 2));
-            if (automatic_scale) L = std::max({L, Q.d.norm(), E2.d.norm()});
-            double diff2 = (E1.R - E2.R).squaredNorm();
-            if (L > 0) diff2 += (E1.d - E2.d).squaredNorm() / (L * L);
-            const double diff = std::sqrt(diff2);
-            const double err = diff / 63.0;  // Richardson: the half steps are off by about |E1 - E2| / (2^6 - 1)
-            const double allowed = tol * step;
-            const bool reliable = diff > noise;
-            if (!reliable || err <= allowed) {
-                Q = E2 * Q;
-                // one Newton-Schulz step towards the nearest rotation (R^T R stays I to rounding)
-                Q.R = 0.5 * Q.R * (3.0 * Eigen::Matrix3d::Identity() - Q.R.transpose() * Q.R);
-                t = t_next;
-                task.report(t);
-                if (++res.steps > options.max_steps)
-                    throw error("se3_tensor: more than " + std::to_string(options.max_steps) +
-                                " steps to reach t = " + std::to_string(target) +
-                                " (a very long time for this twist, or a twist that is not smooth)");
-            } else if (step <= 1e-10 * std::max(1.0, t)) {
-                throw error("se3_tensor: the twist is not smooth near t = " + std::to_string(t) +
-                            " (the step fell below 1e-10 of t)");
-            }
-            if (reliable) {
-                const double next = step * std::clamp(0.9 * std::pow(allowed / err, 1.0 / 6.0), 0.2, 4.0);
-                if (!last || err > allowed) h = next;
-            }
-            if (options.max_step > 0) h = std::min(h, options.max_step);
+    // the step control of numeric/magnus_control.h on SE(3), in the norm
+    // |E|^2 = |R_E|_F^2 + |d_E|^2 / L^2 (L the length scale: given, or the largest |d| so far)
+    struct se3 {
+        using element = rigid_motion;
+        const twist_function& xi;
+        double L;
+        bool automatic_scale;
+        element step(double t0, double h) const { return se3_exp(se3_magnus6_step(xi, t0, h)); }
+        double distance(const element& a, const element& b, const element& Q) {
+            if (automatic_scale) L = std::max({L, Q.d.norm(), b.d.norm()});
+            double d2 = (a.R - b.R).squaredNorm();
+            if (L > 0) d2 += (a.d - b.d).squaredNorm() / (L * L);
+            return std::sqrt(d2);
         }
-        res.Q.push_back(Q);
-    }
+        void advance(element& Q, const element& E) const {
+            Q = E * Q;
+            // one Newton-Schulz step towards the nearest rotation (R^T R stays I to rounding)
+            Q.R = 0.5 * Q.R * (3.0 * Eigen::Matrix3d::Identity() - Q.R.transpose() * Q.R);
+        }
+    } group{counted, options.length_scale, options.length_scale == 0};
+    const magnus_control control{"se3_tensor", "the twist", "twist", "SE(3) tensor",
+                                 options.rel_tol, options.max_step, options.max_steps};
+    res.Q = magnus_integrate(group, rigid_motion{}, times, counted(0.0).w.norm(), control, res.steps);
     res.evaluations = evaluations;
-    task.finish();
     return res;
 }
 
