@@ -350,6 +350,12 @@ TEST(DualDarboux, TheLanguagePath) {
         << ts.err.str();
     EXPECT_NE(ts.out.str().find("numeric: Magnus on SE(3)"), std::string::npos) << ts.out.str();
     EXPECT_NE(ts.out.str().find("Magnus on SE(3) against the dual problem"), std::string::npos) << ts.out.str();
+    // a symbol without a value is named, by the builtin
+    EXPECT_EQ(ts.run("h := solve(ode(x' + ([k*t, 0, 1] + eps*[0, 1, 0]) x x = 0, x(0) = [1, 0, 0]))\n"
+                     "eval(h, [], t = 1)\n"),
+              1);
+    EXPECT_NE(ts.err.str().find("eval: cannot evaluate numerically: symbol 'k' has no value"), std::string::npos)
+        << ts.err.str();
     EXPECT_EQ(ts.run("check(G, g)\n"), 1);
     EXPECT_NE(ts.err.str().find("is numeric"), std::string::npos) << ts.err.str();
     // a turning dual twist that is a fixed screw axis: F in closed form, equal to solve's

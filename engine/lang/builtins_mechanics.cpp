@@ -531,8 +531,33 @@ value builtin_model(const builtin& b, const args_t& a, context&) {
     return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
 }
 
+// A message of the numeric layers (a symbol without a value, a step limit) named by the builtin.
+value eval_expression(const builtin& b, const args_t& a);
+
+template <class F>
+value named_by(const builtin& b, F&& f) {
+    try {
+        return f();
+    } catch (const type_error& e) {
+        const std::string m = e.what();
+        if (m.rfind(b.name + ": ", 0) == 0) throw;
+        throw type_error(b.name + ": " + m);
+    } catch (const domain_error& e) {
+        const std::string m = e.what();
+        if (m.rfind(b.name + ": ", 0) == 0) throw;
+        throw domain_error(b.name + ": " + m);
+    }
+}
+
+value eval_reduction(const builtin& b, const args_t& a);
+
 value builtin_eval(const builtin& b, const args_t& a, context&) {
-    if (a[0].is_reduction()) {  // r = F_(-w)(psi) (or r') at the given times, numerically
+    if (a[0].is_reduction()) return named_by(b, [&] { return eval_reduction(b, a); });
+    return eval_expression(b, a);
+}
+
+value eval_reduction(const builtin& b, const args_t& a) {
+    {  // r = F_(-w)(psi) (or r') at the given times, numerically
         const reduction& red = a[0].as_reduction();
         if (a.size() != 3)
             throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
@@ -557,6 +582,9 @@ value builtin_eval(const builtin& b, const args_t& a, context&) {
         for (const auto& v : x) out.push_back(triple_value(v));
         return value(out);
     }
+}
+
+value eval_expression(const builtin& b, const args_t& a) {
     // floats taken as the exact numbers they are, so that nothing is rounded before
     // to_double's precision-controlled evaluation (cancellation, long phases)
     const ex e = num::exact_floats_of(arg_ex(a, 0, b));
@@ -620,7 +648,7 @@ value builtin_eval(const builtin& b, const args_t& a, context&) {
 
 value builtin_verify(const builtin& b, const args_t& a, context& c) {
     const auto& P = problem_arg(a, 0, b);
-    if (a[1].is_reduction()) return verify_reduction(b, a, c);
+    if (a[1].is_reduction()) return named_by(b, [&] { return verify_reduction(b, a, c); });
     const ex s = P.is_vector ? vector_arg(a, 1, b) : arg_ex(a, 1, b);
     data_values d = exact_values(read_values(a[2], b, 2));  // no rounding before the stable evaluator
     const auto [T, n, opt] = verify_arguments(a, b);
