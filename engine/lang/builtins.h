@@ -128,6 +128,24 @@ std::vector<GiNaC::ex> arg_ex_list(const std::vector<value>& args, std::size_t i
 /// True when e is or holds a matrix.
 bool has_matrix(const GiNaC::ex& e);
 
+/// f(), with the type_error and domain_error messages of the layers below named by the builtin
+/// ("eval: symbol 'k' has no value"), as the language shows every refusal; a message that
+/// already begins with the builtin's name is passed on as it is.
+template <class F>
+auto named_by(const builtin& b, F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const type_error& e) {
+        const std::string m = e.what();
+        if (m.rfind(b.name + ":", 0) == 0) throw;
+        throw type_error(b.name + ": " + m);
+    } catch (const domain_error& e) {
+        const std::string m = e.what();
+        if (m.rfind(b.name + ":", 0) == 0) throw;
+        throw domain_error(b.name + ": " + m);
+    }
+}
+
 // --- registration, one function per part of the engine ---------------------------
 void register_core_builtins(registry& r);         // lang/builtins_core.cpp: print, subs, diff, expand, ...
 void register_algebra_builtins(registry& r);      // lang/builtins_algebra.cpp: generic algebras, elements

@@ -531,24 +531,7 @@ value builtin_model(const builtin& b, const args_t& a, context&) {
     return value(mechanics::classify(problem_arg(a, 0, b), scene_values(a, 1, b)).report());
 }
 
-// A message of the numeric layers (a symbol without a value, a step limit) named by the builtin.
 value eval_expression(const builtin& b, const args_t& a);
-
-template <class F>
-value named_by(const builtin& b, F&& f) {
-    try {
-        return f();
-    } catch (const type_error& e) {
-        const std::string m = e.what();
-        if (m.rfind(b.name + ": ", 0) == 0) throw;
-        throw type_error(b.name + ": " + m);
-    } catch (const domain_error& e) {
-        const std::string m = e.what();
-        if (m.rfind(b.name + ": ", 0) == 0) throw;
-        throw domain_error(b.name + ": " + m);
-    }
-}
-
 value eval_reduction(const builtin& b, const args_t& a);
 
 value builtin_eval(const builtin& b, const args_t& a, context&) {
@@ -557,31 +540,30 @@ value builtin_eval(const builtin& b, const args_t& a, context&) {
 }
 
 value eval_reduction(const builtin& b, const args_t& a) {
-    {  // r = F_(-w)(psi) (or r') at the given times, numerically
-        const reduction& red = a[0].as_reduction();
-        if (a.size() != 3)
-            throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
-        const ex& tr = arg_ex(a, 2, b);
-        if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(red.solution->problem->t))
-            throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
-        std::vector<double> times;
-        const ex T = tr.rhs();
-        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
-            times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
-        const bool one = !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T);
-        if (is_dual_reduction(red)) {  // x^ = Q^ x^0 (or x^'), Q^ by Magnus on SE(3)
-            const auto x = dual_reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
-            if (x.size() == 1 && one) return dual_triple_value(x[0]);
-            list out;
-            for (const auto& v : x) out.push_back(dual_triple_value(v));
-            return value(out);
-        }
-        const auto x = reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
-        if (x.size() == 1 && one) return triple_value(x[0]);
+    // r = F_(-w)(psi) (or r') at the given times, numerically
+    const reduction& red = a[0].as_reduction();
+    if (a.size() != 3)
+        throw type_error(b.name + ": a solution by reduction is evaluated at times: eval(s, values, t = T)");
+    const ex& tr = arg_ex(a, 2, b);
+    if (!GiNaC::is_a<GiNaC::relational>(tr) || !tr.lhs().is_equal(red.solution->problem->t))
+        throw type_error(b.name + ": argument 3 must be t = T (usage: " + b.signature + ")");
+    std::vector<double> times;
+    const ex T = tr.rhs();
+    for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.nops() : 1); ++i)
+        times.push_back(to_double(GiNaC::is_a<GiNaC::lst>(T) || GiNaC::is_a<GiNaC::matrix>(T) ? T.op(i) : T, b, "the time"));
+    const bool one = !GiNaC::is_a<GiNaC::lst>(T) && !GiNaC::is_a<GiNaC::matrix>(T);
+    if (is_dual_reduction(red)) {  // x^ = Q^ x^0 (or x^'), Q^ by Magnus on SE(3)
+        const auto x = dual_reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
+        if (x.size() == 1 && one) return dual_triple_value(x[0]);
         list out;
-        for (const auto& v : x) out.push_back(triple_value(v));
+        for (const auto& v : x) out.push_back(dual_triple_value(v));
         return value(out);
     }
+    const auto x = reduction_at(red, reduction_values(red, read_values(a[1], b, 1)), times, b);
+    if (x.size() == 1 && one) return triple_value(x[0]);
+    list out;
+    for (const auto& v : x) out.push_back(triple_value(v));
+    return value(out);
 }
 
 value eval_expression(const builtin& b, const args_t& a) {

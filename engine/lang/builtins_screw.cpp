@@ -116,50 +116,37 @@ value dq_value(const dual::dual_quaternion& q) { return value(list{value(q.scala
 
 value motion_value(const dual::rigid_motion& m) { return value(list{value(ex(m.R)), value(m.d)}); }
 
-// A named error: the engine's message with the builtin's name in front.
-template <class F>
-auto named(const builtin& b, F&& f) -> decltype(f()) {
-    try {
-        return f();
-    } catch (const domain_error& e) {
-        const std::string w = e.what();
-        throw domain_error(w.rfind(b.name + ":", 0) == 0 ? w : b.name + ": " + w);
-    } catch (const type_error& e) {
-        const std::string w = e.what();
-        throw type_error(w.rfind(b.name + ":", 0) == 0 ? w : b.name + ": " + w);
-    }
-}
 
 value builtin_screw(const builtin& b, const args_t& a, context&) {
     const dual::screw s = screw_args(a, 0, b);
     const ex x = dual_vector_arg(a, 4, b);
-    return value(named(b, [&] { return dual::screw_apply(s, x); }));
+    return value(named_by(b, [&] { return dual::screw_apply(s, x); }));
 }
 
 value builtin_twist_exp(const builtin& b, const args_t& a, context&) {
     const ex w = dual_vector_arg(a, 0, b), x = dual_vector_arg(a, 1, b);
-    return value(named(b, [&] { return dual::exp_dual_skew(w, x); }));
+    return value(named_by(b, [&] { return dual::exp_dual_skew(w, x); }));
 }
 
 value builtin_rigid_motion(const builtin& b, const args_t& a, context&) {
     const dual::screw s = screw_args(a, 0, b);
-    return motion_value(named(b, [&] { return dual::motion_of_screw(s); }));
+    return motion_value(named_by(b, [&] { return dual::motion_of_screw(s); }));
 }
 
 value builtin_screw_parameters(const builtin& b, const args_t& a, context&) {
     const dual::rigid_motion m = motion_args(a, 0, b);
-    const dual::screw s = named(b, [&] { return dual::screw_of_motion(m); });
+    const dual::screw s = named_by(b, [&] { return dual::screw_of_motion(m); });
     return value(list{value(s.axis), value(s.point), value(s.angle), value(s.translation)});
 }
 
 value builtin_dual_quaternion(const builtin& b, const args_t& a, context&) {
     if (a.size() == 4) {
         const dual::screw s = screw_args(a, 0, b);
-        return dq_value(named(b, [&] { return dual::dq_of_screw(s); }));
+        return dq_value(named_by(b, [&] { return dual::dq_of_screw(s); }));
     }
     if (a.size() != 2) throw type_error(b.name + ": give the screw (u, p, a, d) or the motion (R, d)" + usage(b));
     const dual::rigid_motion m = motion_args(a, 0, b);
-    return dq_value(named(b, [&] { return dual::dq_of_motion(m); }));
+    return dq_value(named_by(b, [&] { return dual::dq_of_motion(m); }));
 }
 
 value builtin_dq_product(const builtin& b, const args_t& a, context&) {
@@ -172,18 +159,18 @@ value builtin_dq_conjugate(const builtin& b, const args_t& a, context&) { return
 value builtin_dq_apply(const builtin& b, const args_t& a, context&) {
     const dual::dual_quaternion q = dq_arg(a, 0, b);
     const ex x = dual_vector_arg(a, 1, b);
-    return value(named(b, [&] { return dual::dq_apply(q, x); }));
+    return value(named_by(b, [&] { return dual::dq_apply(q, x); }));
 }
 
 value builtin_dq_motion(const builtin& b, const args_t& a, context&) {
     const dual::dual_quaternion q = dq_arg(a, 0, b);
-    return motion_value(named(b, [&] { return dual::motion_of_dq(q); }));
+    return motion_value(named_by(b, [&] { return dual::motion_of_dq(q); }));
 }
 
 value builtin_motion_apply(const builtin& b, const args_t& a, context&) {
     const dual::rigid_motion m = motion_args(a, 0, b);
     const ex x = dual_vector_arg(a, 2, b);
-    return value(named(b, [&] {
+    return value(named_by(b, [&] {
         dual::require_rotation(m.R, b.name);
         return dual::motion_apply(m, x);
     }));
@@ -216,14 +203,14 @@ value dual_rotation_operator(const builtin& b, const args_t& a, context& c, cons
     // (VI.1.13-15) by transference: R' = W^ R, R(0) = I gives R = exp(t W^) for a constant twist
     const ex dw = diff_t(w, t);  // (a literal's derivative is a matrix of zeros)
     if (!w.has(t) && (dw.is_zero() || equal(dw, 0)))
-        return value(named(b, [&] { return dual::exp_dual_skew(w, x, t); }));
+        return value(named_by(b, [&] { return dual::exp_dual_skew(w, x, t); }));
     // a dual twist w(t): y = F_w(x) solves y' = w x y, y(0) = x, the dual Poisson-Darboux problem
     // with Omega^ = -w: closed for a fixed screw axis and a regular screw precession
     // (mechanics/dual_darboux.h), else numeric (Magnus on SE(3)), evaluated by eval
     if (mechanics::depends_on_time(x, t))
         throw closed_form_error(b.name + ": x = " + print_ex(x) + " depends on t: over a turning dual twist w(t) "
                                 "F(w, x) takes a constant x");
-    const auto P = named(b, [&] { return mechanics::dual_rotation_problem(w, x, t); });
+    const auto P = named_by(b, [&] { return mechanics::dual_rotation_problem(w, x, t); });
     if (const auto y = mechanics::dual_darboux_motion(P->dual_darboux->twist, P->dual_darboux->x0, t))
         // one literal [a + eps b, ...] where the data have components (as F of a real w prints)
         return value(vector_symbols(*y).empty() ? dual::reduce(subs_components(*y, {})) : *y);

@@ -68,9 +68,9 @@ void require_value_at_zero(const GiNaC::ex& w, const GiNaC::ex& t, const std::st
 /// e depends on t: t occurs in it, or a vector declared as a function of t (vector w(t)).
 bool depends_on_time(const GiNaC::ex& e, const GiNaC::ex& t);
 
-/// cos(a) and sin(a) with a's own minus sign taken out (a negative number, a product with a
-/// negative numeric factor, a sum of such): cos(-b) = cos(b), sin(-b) = -sin(b). The rotation
-/// of Q' = -W Q turns by -alpha; its closed forms print cos(t^2/2), not cos(-t^2/2).
+/// cos(a) and sin(a) with a's own minus sign taken out where a prints with one in front
+/// (to_string: deterministic, unlike GiNaC's sign of a sum): cos(-b) = cos(b), sin(-b) = -sin(b).
+/// The rotation of Q' = -W Q turns by -alpha; its closed forms print cos(t^2/2), not cos(-t^2/2).
 std::pair<GiNaC::ex, GiNaC::ex> cos_sin_of_angle(const GiNaC::ex& a);
 
 /// A vector v as sum_j c_j(t) V_j with every V_j constant (free of t and of vectors declared as
