@@ -371,9 +371,17 @@ std::vector<ex> basis_symbols(symbols& S, std::initializer_list<const char*> nam
 
 using symrep::test::same;
 
-/// |a - b| <= tol after evaluation at 30 digits (complex values allowed).
+/// GiNaC::Digits for a scope, restored after it: a test that leaves 50 digits behind changes the
+/// tests that run after it in the same process (MovingFrame's verify failed after these).
+struct digits_for_scope {
+    long saved = GiNaC::Digits;
+    explicit digits_for_scope(long d) { GiNaC::Digits = d; }
+    ~digits_for_scope() { GiNaC::Digits = saved; }
+};
+
+/// |a - b| <= tol after evaluation at 50 digits (complex values allowed).
 ::testing::AssertionResult near(const ex& a, const ex& b, double tol = 1e-25) {
-    GiNaC::Digits = 50;
+    const digits_for_scope digits(50);
     const ex d = GiNaC::evalf(a - b);
     if (!GiNaC::is_a<numeric>(d)) return ::testing::AssertionFailure() << "not numeric: " << d;
     const double m = GiNaC::abs(ex_to<numeric>(d)).to_double();
@@ -398,7 +406,7 @@ coeffs subs_all(const coeffs& c, const GiNaC::exmap& m) {
 
 /// exp(w) by its Taylor series in 50-digit floats (w numeric).
 coeffs exp_series(const table_algebra& A, const coeffs& w) {
-    GiNaC::Digits = 50;
+    const digits_for_scope digits(50);
     coeffs wf;
     for (const auto& x : w) wf.push_back(GiNaC::evalf(x));
     coeffs term = A.unit(), sum = A.unit();

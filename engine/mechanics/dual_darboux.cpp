@@ -283,21 +283,8 @@ std::pair<cauchy_problem, cauchy_problem> dual_darboux_parts(const cauchy_proble
 
 namespace {
 
-// A real vector expression (values put in) as one literal [x, y, z] of functions of t.
-ex numeric_literal(const ex& e, const std::string& what) {
-    if (e.is_zero() || equal(e, 0)) return vector_literal(0, 0, 0);
-    ex v;
-    try {
-        v = GiNaC::is_a<GiNaC::matrix>(e) ? e : subs_components(e, {});
-    } catch (const type_error&) {
-        throw type_error(what + " is not a vector of numbers: " + to_string(e) + " (give every vector a value)");
-    }
-    if (!is_vector_literal(v)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
-    return v;
-}
-
 Eigen::Vector3d numbers(const ex& e, const std::string& what) {
-    const ex v = numeric_literal(e, what);
+    const ex v = numeric_vector_literal(e, what);
     Eigen::Vector3d out;
     for (int i = 0; i < 3; ++i) {
         try {
@@ -318,8 +305,8 @@ std::vector<num::twist> dual_darboux_states(const cauchy_problem& P, const value
     const dual_darboux_form& F = *P.dual_darboux;
     const dual::dual_parts om = dual::parts(dual::reduce(put(F.twist.omega)));
     const dual::dual_parts x0 = dual::parts(dual::reduce(put(F.x0)));
-    const ex w = numeric_literal(om.primal, "the twist's primal part w(t)");
-    const ex v = numeric_literal(om.dual, "the twist's dual part v(t)");
+    const ex w = numeric_vector_literal(om.primal, "the twist's primal part w(t)");
+    const ex v = numeric_vector_literal(om.dual, "the twist's dual part v(t)");
     auto fw = std::make_shared<num::compiled_function>(num::compile(w, {P.t}));
     auto fv = std::make_shared<num::compiled_function>(num::compile(v, {P.t}));
     const num::twist_function xi = [fw, fv](double x) { return num::twist{fw->eval3(&x), fv->eval3(&x)}; };
@@ -341,15 +328,7 @@ std::vector<num::twist> dual_darboux_states(const cauchy_problem& P, const value
 
 std::shared_ptr<const cauchy_problem> dual_rotation_problem(const ex& w, const ex& x0, const ex& t) {
     // y' = w x y, i.e. y' + Omega^ x y = 0 with Omega^ = -w, y(0) = x0 (as rotation_problem)
-    auto P = std::make_shared<cauchy_problem>();
-    P->name = "y";
-    P->t = t;
-    P->is_vector = true;
-    const ex y = GiNaC::realsymbol("y");
-    register_vector_function(y, t);
-    P->unknowns = {y, derivative(y)};
-    P->initial = {x0};
-    P->expression = P->unknowns[1] - cross(w, y);
+    const auto P = rotation_statement(w, x0, t);
     std::string why;
     auto F = read_dual_darboux(*P, &why);
     if (!F) throw domain_error("F_w(x): " + (why.empty() ? "the dual w(t) = " + to_string(w) + " is not read" : why));

@@ -9,6 +9,7 @@
 
 #include "symrep/core/error.h"
 #include "symrep/dual/dual.h"
+#include "symrep/mechanics/reduced_solution.h"
 #include "symrep/mechanics/turning_frame.h"
 #include "symrep/numeric/evaluator.h"
 #include "symrep/numeric/rotation_tensor.h"
@@ -311,23 +312,6 @@ std::vector<rotating_frame_state> moving_frame_states(const numeric_moving_frame
     return out;
 }
 
-namespace {
-
-// A vector expression with its values in, as one literal of functions of t.
-ex literal_in_t(const ex& e, const std::string& what) {
-    if (e.is_zero()) return vector_literal(0, 0, 0);
-    ex v;
-    try {
-        v = GiNaC::is_a<GiNaC::matrix>(e) ? e : subs_components(e, {});
-    } catch (const type_error&) {
-        throw type_error(what + " is not a vector of numbers: " + to_string(e) + " (give every vector a value)");
-    }
-    if (!is_vector_literal(v)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
-    return v;
-}
-
-}  // namespace
-
 std::vector<rotating_frame_state> carried_frame_states(const moving_frame_form& F,
                                                        const std::function<ex(const ex&)>& put,
                                                        const std::vector<double>& times) {
@@ -337,9 +321,9 @@ std::vector<rotating_frame_state> carried_frame_states(const moving_frame_form& 
                                 "\nhas no closed form, and the frame carries constant vectors: not evaluated");
     const ex& t = P0.t;
     const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
-    const ex psi = literal_in_t(put(solve_unwitnessed(P0)), "the inertial solution " + P0.name);
-    const ex o = literal_in_t(put(F.o), "the origin's path o(t)");
-    const ex w = literal_in_t(put(F.w), "the frame's w(t)");
+    const ex psi = numeric_vector_literal(put(solve_unwitnessed(P0)), "the inertial solution " + P0.name);
+    const ex o = numeric_vector_literal(put(F.o), "the origin's path o(t)");
+    const ex w = numeric_vector_literal(put(F.w), "the frame's w(t)");
     const auto f = [&](const ex& e) { return std::make_shared<num::compiled_function>(num::compile(e, {t})); };
     const auto p0 = f(psi), p1 = f(psi.diff(ts)), q0 = f(o), q1 = f(o.diff(ts)), fw = f(w);
     const num::angular_velocity omega = [fw](double x) {

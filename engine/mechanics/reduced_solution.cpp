@@ -16,6 +16,18 @@ namespace symrep::mechanics {
 
 using GiNaC::ex;
 
+ex numeric_vector_literal(const ex& e, const std::string& what) {
+    if (e.is_zero()) return vector_literal(0, 0, 0);
+    ex v;
+    try {
+        v = subs_components(e, {});
+    } catch (const type_error&) {
+        throw type_error(what + " is not a vector of numbers: " + to_string(e) + " (give every vector a value)");
+    }
+    if (!is_vector_literal(v)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
+    return v;
+}
+
 namespace {
 
 double number(const ex& e, const std::string& what) {
@@ -27,19 +39,10 @@ double number(const ex& e, const std::string& what) {
     }
 }
 
-// A vector expression without vector symbols as one literal [x, y, z].
-ex literal(const ex& e, const std::string& what) {
-    if (e.is_zero()) return vector_literal(0, 0, 0);
-    try {
-        return subs_components(e, {});
-    } catch (const type_error&) {
-        throw type_error(what + " is not a vector of numbers: " + to_string(e) + " (give every vector a value)");
-    }
-}
+ex literal(const ex& e, const std::string& what) { return numeric_vector_literal(e, what); }
 
 Eigen::Vector3d vector_number(const ex& e0, const std::string& what) {
     const ex e = literal(e0, what);
-    if (!is_vector_literal(e)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
     return {number(e.op(0), what), number(e.op(1), what), number(e.op(2), what)};
 }
 
@@ -47,7 +50,6 @@ Eigen::Vector3d vector_number(const ex& e0, const std::string& what) {
 num::angular_velocity vector_of_t(const ex& e0, const ex& t, const std::string& what) {
     if (e0.is_zero()) return [](double) { return Eigen::Vector3d::Zero(); };
     const ex e = literal(e0, what);
-    if (!is_vector_literal(e)) throw type_error(what + " is not a vector of numbers: " + to_string(e));
     auto f = std::make_shared<num::compiled_function>(num::compile(e, {t}));
     return [f, what](double x) {
         const Eigen::Vector3d v = f->eval3(&x);

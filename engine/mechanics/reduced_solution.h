@@ -34,6 +34,11 @@ struct reduced_solution {
     std::string to_string() const;
 };
 
+/// A vector expression with its values in (no vector symbol left) as one literal [x, y, z] of
+/// numbers or functions of t; type_error naming `what` when a vector symbol is left or it is no
+/// vector.
+GiNaC::ex numeric_vector_literal(const GiNaC::ex& e, const std::string& what);
+
 /// Turns a symbolic value into a number: the caller's way of putting in its values
 /// (exact, with limits) and evaluating; scalars give 1x1, vectors 3x1.
 using value_map = std::function<GiNaC::ex(const GiNaC::ex&)>;

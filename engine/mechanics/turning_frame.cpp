@@ -499,7 +499,7 @@ std::vector<ex> first_integrals(const cauchy_problem& P, const turning_frame_for
     return out;
 }
 
-std::shared_ptr<const cauchy_problem> rotation_problem(const ex& w, const ex& x0, const ex& t) {
+std::shared_ptr<cauchy_problem> rotation_statement(const ex& w, const ex& x0, const ex& t) {
     // (VI.3.118-119) y = F_w(x0): y' = w x y, i.e. y' + v x y = 0 with v = -w, y(0) = x0
     auto P = std::make_shared<cauchy_problem>();
     P->name = "y";
@@ -510,6 +510,11 @@ std::shared_ptr<const cauchy_problem> rotation_problem(const ex& w, const ex& x0
     P->unknowns = {y, derivative(y)};
     P->initial = {x0};
     P->expression = P->unknowns[1] - cross(w, y);
+    return P;
+}
+
+std::shared_ptr<const cauchy_problem> rotation_problem(const ex& w, const ex& x0, const ex& t) {
+    const auto P = rotation_statement(w, x0, t);
     std::string why;
     auto F = read_turning_frame(*P, &why);
     if (!F) throw domain_error("F_w(x): " + (why.empty() ? std::string("w(t) = " + to_string(w) + " is not read") : why));

@@ -141,5 +141,8 @@ std::vector<GiNaC::ex> first_integrals(const cauchy_problem& P, const turning_fr
 /// velocity w as a solution by reduction (reduced_solution.h) when R has no closed form.
 /// domain_error when w is not read as an angular velocity (a w depending on y, say).
 std::shared_ptr<const cauchy_problem> rotation_problem(const GiNaC::ex& w, const GiNaC::ex& x0, const GiNaC::ex& t);
+/// The same problem y' = w x y, y(0) = x0 as stated, not read (rotation_problem reads it as a
+/// turning frame, dual_darboux.h's dual_rotation_problem as a dual Poisson-Darboux problem).
+std::shared_ptr<cauchy_problem> rotation_statement(const GiNaC::ex& w, const GiNaC::ex& x0, const GiNaC::ex& t);
 
 }  // namespace symrep::mechanics
