@@ -329,6 +329,19 @@ TEST(MovingFrame, Theorem11HoldsForEveryRotation) {
     EXPECT_FALSE(zero(s1.add(cross(w, r)).add(R.mul(o1)).sub(R.mul(p1))));
 }
 
+// At digits(40) a float value (pa = 0.7) was put in as the exact rational of its binary value (a
+// 2^133 denominator): verify's system carried integers of 300 digits through sqrt and |x|^-3 and
+// stopped with "the solution is not finite". Values are the decimals they print as now.
+TEST(MovingFrame, FloatValuesAtFortyDigits) {
+    test_session t;
+    ASSERT_EQ(t.run("digits(40)\nP0 := ode(x'' + mu*x/|x|^3 = 0, x(0) = [1, 0, 0], x'(0) = [0, 1.1, 0.2])\n"
+                    "P := moving_frame(P0, [pa*sin(nu*t), pa*cos(nu*t), pb], [t/2, 0, t^2/10])\ns := solve(P)"),
+              0)
+        << t.err.str();
+    EXPECT_LT(number(t, "verify(P, s, [pa = 0.7, nu = 1.3, pb = -0.5, mu = 1], 5)"), 1e-8) << t.err.str();
+    ASSERT_EQ(t.run("digits(17)"), 0);
+}
+
 // Bad inputs are refused by name.
 TEST(MovingFrame, BadInputsAreRefused) {
     test_session t;

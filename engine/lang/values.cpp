@@ -5,6 +5,7 @@
 #include <set>
 
 #include "symrep/numeric/reference.h"
+#include "symrep/scalar/floats.h"
 #include "symrep/scalar/limit.h"
 
 #include "symrep/scalar/scalar.h"
@@ -146,8 +147,11 @@ std::vector<ex> components(const ex& c) {
 }
 
 data_values exact_values(data_values d) {
-    for (auto& [k, x] : d.vectors) x = num::exact_floats_of(x);
-    for (auto& [k, x] : d.scalars) x = num::exact_floats_of(x);
+    // a float is worth the decimal it prints as (scalar/floats.h, as == takes it): 0.7 -> 7/10.
+    // Its binary value instead (0.7 at 40 digits has a 2^133 denominator) made verify's system
+    // carry integers of 300 digits (through sqrt and |x|^-3) that overflow in doubles
+    for (auto& [k, x] : d.vectors) x = floats_as_decimals(x);
+    for (auto& [k, x] : d.scalars) x = floats_as_decimals(x);
     return d;
 }
 

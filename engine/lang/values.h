@@ -31,8 +31,9 @@ data_values read_values(const value& v, const builtin& b, std::size_t argno);
 /// e with every value put in: vectors by components, then scalars (a 3x1 matrix for a vector e).
 GiNaC::ex put_values(const GiNaC::ex& e, const data_values& d);
 /// d with every floating-point number in its values replaced by the exact
-/// rational it denotes (for evaluation: GiNaC would otherwise round at once,
-/// e.g. 1 - cos(1e-12) to 0 at 20 digits, when the values are put in).
+/// rational of the decimal it prints as (scalar/floats.h: 0.7 -> 7/10; for evaluation:
+/// GiNaC would otherwise round at once, e.g. 1 - cos(1e-12) to 0 at 20 digits, when the
+/// values are put in).
 data_values exact_values(data_values d);
 /// put_values, or where that divides by zero, the limit as the values approach those given
 /// (scalar/limit.h), the value of the symbol `held` (eval's time) staying as given;
