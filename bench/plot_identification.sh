@@ -11,11 +11,7 @@
 #        PLOT_ONLY=1 bash bench/plot_identification.sh  (redraw from the CSV files in docs/figures)
 # Output: docs/figures/identification_convergence.{csv,png}, identification_noise.{csv,png},
 # identification_cost.png, identification_systems.csv.
-set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-build=${1:-build}
-out=docs/figures
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/plot_common.sh"  # strict mode, repository root, $build, $out
 if [ -z "${PLOT_ONLY:-}" ]; then
     if [ -z "${NO_BUILD:-}" ]; then  # NO_BUILD=1: symrep_bench is built already
         cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null

@@ -8,11 +8,7 @@
 #        PLOT_ONLY=1 bash bench/plot_relative_pose.sh    (redraw from docs/figures/relative_pose_wp.csv)
 #        NO_BUILD=1: use the symrep_bench already built
 # Output: docs/figures/relative_pose_wp.{csv,png}.
-set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-build=${1:-build}
-out=docs/figures
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/plot_common.sh"  # strict mode, repository root, $build, $out
 if [ -z "${PLOT_ONLY:-}" ]; then
 [ -n "${NO_BUILD:-}" ] || cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench
 csv=$(mktemp)

@@ -7,11 +7,7 @@
 #        PLOT_ONLY=1 bash bench/plot_rotation_tensor.sh   (redraw from the CSV files in docs/figures)
 # Output: docs/figures/rotation_tensor_wp.{csv,png}, rotating_kepler_drift.{csv,png},
 # relative_motion_cw.{csv,png} and relative_motion_elliptic.{csv,png}.
-set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-build=${1:-build}
-out=docs/figures
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/plot_common.sh"  # strict mode, repository root, $build, $out
 if [ -z "${PLOT_ONLY:-}" ]; then
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench

@@ -6,11 +6,7 @@
 # usage: bash bench/plot_se3.sh [build-dir]          (default build dir: build)
 #        PLOT_ONLY=1 bash bench/plot_se3.sh          (redraw from docs/figures/se3_wp.csv)
 # Output: docs/figures/se3_wp.{csv,png}; about a minute after the build.
-set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-build=${1:-build}
-out=docs/figures
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/plot_common.sh"  # strict mode, repository root, $build, $out
 if [ -z "${PLOT_ONLY:-}" ]; then
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSYMREP_BUILD_BENCH=ON >/dev/null
 cmake --build "$build" -j"${JOBS:-2}" --target symrep_bench
